@@ -1,0 +1,55 @@
+# Entry point of the toolkit. `make test` and `make run` work on a fresh Debian machine:
+# they install what is missing (make deps), configure, build and run.
+BUILD   ?= build
+JOBS    ?= $(shell nproc)
+PREFIX  ?= /usr/local
+OUT     ?= out
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+
+DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
+  libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
+  python3 python3-numpy python3-scipy python3-ase python3-meshio
+
+.PHONY: all deps configure test test-asan bench run install clean
+
+all: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Installs the Debian packages the project needs; a no-op when all are present.
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing$$missing"; \
+	  if [ "$$(id -u)" -eq 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+configure: $(BUILD)/CMakeCache.txt
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+# Builds everything and runs every test (Catch2 unit tests, programs as a user runs them,
+# interoperability with ASE, meshio and scipy); the last line is "N passed, N failed".
+test: deps all
+	@scripts/run_tests.sh $(BUILD)
+
+# The same tests under AddressSanitizer and UBSan (slower; not part of CI).
+test-asan: deps
+	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMP_SANITIZE=ON"
+
+# Performance figures for the README's benchmark table (written to $(OUT)/bench/).
+bench: deps all
+	@scripts/bench.sh $(BUILD) $(OUT)/bench
+
+# The demo pipeline of DESIGN.md with every tool that exists so far.
+run: deps all
+	@scripts/demo.sh $(BUILD) $(OUT)/demo
+
+install: all
+	cmake --install $(BUILD) --prefix $(DESTDIR)$(PREFIX)
+
+clean:
+	rm -rf $(BUILD) build-asan $(OUT)

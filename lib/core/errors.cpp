@@ -1,0 +1,16 @@
+#include "core/errors.hpp"
+
+namespace cmp {
+
+namespace {
+std::string located(const std::string& file, long line, const std::string& what) {
+  const std::string name = file == "-" ? "<stdin>" : file;
+  if (line > 0) return name + ":" + std::to_string(line) + ": " + what;
+  return name + ": " + what;
+}
+}  // namespace
+
+InputError::InputError(std::string file, long line, const std::string& what)
+    : std::runtime_error(located(file, line, what)), file_(std::move(file)), line_(line) {}
+
+}  // namespace cmp

@@ -1,0 +1,28 @@
+#pragma once
+#include "mesh/tri_mesh.hpp"
+#include <vector>
+
+namespace cmp::mesh {
+
+// The undirected edges of a triangle mesh and the faces on each side.
+struct EdgeTopology {
+  EdgeMatrix edges;       // #E by 2, each edge once, edges(e,0) < edges(e,1), sorted lexicographically
+  EdgeMatrix edge_faces;  // #E by 2, the first two faces containing edge e (-1 where fewer)
+  std::vector<int> edge_face_counts;  // #E, how many faces contain edge e (2 on a closed manifold)
+};
+
+// Builds the edge list in O(#F log #F).
+//   F  #F by 3 triangle indices
+EdgeTopology edge_topology(const FaceMatrix& F);
+
+// Vertex-vertex adjacency in compressed-row form: the neighbours of vertex i are
+// neighbours[offsets[i] .. offsets[i+1]), sorted ascending, each once.
+struct VertexAdjacency {
+  std::vector<int> offsets;     // #V + 1
+  std::vector<int> neighbours;  // 2 #E
+};
+
+//   F  #F by 3, vertex_count  #V (vertices in no face get no neighbours)
+VertexAdjacency vertex_adjacency(const FaceMatrix& F, int vertex_count);
+
+}  // namespace cmp::mesh

@@ -1,0 +1,183 @@
+// rndmesh: triangulated sphere meshes and their quality (thesis Appendix A).
+//   rndmesh icosa --level 4 -o cell.off       iterative subdivision (simple, tetra, octa, icosa)
+//   rndmesh random -n 1000 --seed 7 -o cell.off   annealed random points + spherical Delaunay
+//   rndmesh stats cell.off > cell.csv         quality metrics of any closed triangle mesh
+#include "cli/progress.hpp"
+#include "cli/tool.hpp"
+#include "core/errors.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv.hpp"
+#include "io/off.hpp"
+#include "spheremesh/annealing.hpp"
+#include "spheremesh/spherical_delaunay.hpp"
+#include "spheremesh/sphere_mesh_report.hpp"
+#include "spheremesh/subdivision.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <iostream>
+
+using namespace cmp;
+
+namespace {
+
+struct Options {
+  cli::CommonOptions common;
+  std::string output = "-";
+  int level = 1;
+  double radius = 1.0;
+  spheremesh::AnnealingParameters annealing;
+  std::string trace;                 // random: per-temperature CSV
+  std::vector<std::string> inputs;   // stats
+};
+
+// Writes the mesh with its provenance and quality as "# key=value" comments, and tells the
+// user on stderr how good it is.
+void write_mesh(const Options& o, const std::string& provenance, const mesh::TriMesh& m,
+                std::vector<std::string> comments) {
+  const auto report = spheremesh::sphere_mesh_report(m.V, m.F);
+  comments.insert(comments.begin(), provenance);
+  for (const auto& [key, value] : spheremesh::report_fields(report)) comments.push_back(key + "=" + value);
+  io::write_off(o.output, m.V, m.F, comments);
+  if (!o.common.quiet)
+    std::cerr << fmt::format("rndmesh: {} vertices, {} triangles, q_A={:.3f} q_theta={:.3f} q={:.3f}, "
+                             "area error {:.2e}, volume error {:.2e} -> {}\n",
+                             report.vertices, report.faces, report.q_area, report.q_angle,
+                             report.q_radius_ratio, report.area_rel_error,
+                             report.volume_divergence_rel_error, o.output == "-" ? "stdout" : o.output);
+}
+
+void run_subdivision(const Options& o, spheremesh::Subdivision scheme, const std::string& provenance) {
+  const auto m = spheremesh::subdivided_sphere(scheme, o.level, o.radius);
+  write_mesh(o, provenance, m,
+             {"method=" + spheremesh::subdivision_name(scheme), "level=" + std::to_string(o.level),
+              "radius=" + io::format_number(o.radius)});
+}
+
+void run_random(const Options& o, const std::string& provenance) {
+  const auto& p = o.annealing;
+  cli::ProgressBar bar("annealing", p.anneals, o.common.quiet);
+  const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int i, int) { bar.update(i); });
+  mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
+  if (!o.trace.empty()) {
+    io::AtomicOutput out(o.trace);
+    io::CsvWriter csv(out.stream());
+    csv.meta("provenance", provenance);
+    csv.header({"anneal", "temperature_en", "acceptance", "energy_per_point_en"});
+    for (std::size_t i = 0; i < annealed.steps.size(); ++i) {
+      const auto& s = annealed.steps[i];
+      csv.row({std::to_string(i + 1), io::format_number(s.temperature), io::format_number(s.acceptance),
+               io::format_number(s.energy_per_point)});
+    }
+    out.commit();
+  }
+  const double moves_per_second = annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0;
+  write_mesh(o, provenance, m,
+             {"method=random", "points=" + std::to_string(p.points), "radius=" + io::format_number(p.radius),
+              "vertex_radius=" + io::format_number(p.vertex_radius()), "seed=" + std::to_string(p.seed),
+              "T_max=" + io::format_number(p.t_max), "T_min=" + io::format_number(p.t_min),
+              "anneals=" + std::to_string(p.anneals), "sweeps_per_anneal=" + std::to_string(p.sweeps_per_anneal),
+              "epsilon=" + io::format_number(p.epsilon), "cutoff_sigma=" + io::format_number(p.cutoff_sigmas),
+              "step_sigma=" + io::format_number(p.step_sigmas),
+              "acceptance=" + io::format_number(static_cast<double>(annealed.accepted) / std::max(1LL, annealed.attempted)),
+              "final_energy_en=" + io::format_number(annealed.energy)});
+  if (!o.common.quiet)
+    std::cerr << fmt::format("rndmesh: Monte Carlo {:.2f} s, {:.3g} trial moves/s\n", annealed.seconds, moves_per_second);
+}
+
+void run_stats(const Options& o, const std::string& provenance) {
+  // Read and measure every file (in parallel), then write in input order; the first bad file
+  // in that order is the error reported, and nothing is written.
+  const long n = static_cast<long>(o.inputs.size());
+  std::vector<spheremesh::SphereMeshReport> reports(n);
+  std::vector<std::exception_ptr> errors(n);
+#pragma omp parallel for schedule(dynamic)
+  for (long i = 0; i < n; ++i) {
+    try {
+      const auto off = io::read_off(o.inputs[i]);
+      if (off.F.rows() == 0) throw InputError(o.inputs[i], 0, "the mesh has no triangles");
+      reports[i] = spheremesh::sphere_mesh_report(off.V, off.F);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  }
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  io::AtomicOutput out(o.output);
+  io::CsvWriter csv(out.stream());
+  csv.meta("provenance", provenance);
+  std::vector<std::string> header{"file"};
+  for (const auto& field : spheremesh::report_fields(reports.front())) header.push_back(field.first);
+  csv.header(header);
+  for (long i = 0; i < n; ++i) {
+    std::vector<std::string> row{o.inputs[i]};
+    for (const auto& field : spheremesh::report_fields(reports[i])) row.push_back(field.second);
+    csv.row(row);
+    if (!reports[i].closed_manifold && !o.common.quiet)
+      std::cerr << "rndmesh: warning: " << o.inputs[i] << " is not a closed manifold: volumes are not meaningful\n";
+  }
+  out.commit();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::run_tool("rndmesh", [&] {
+    Options o;
+    auto app = cli::make_app("rndmesh", "Triangulated sphere meshes and their quality metrics (thesis Appendix A).");
+    app->require_subcommand(1);
+    cli::add_quiet_option(*app, o.common);
+
+    std::vector<std::pair<CLI::App*, spheremesh::Subdivision>> schemes;
+    for (const auto& [name, scheme, what] :
+         {std::tuple{"simple", spheremesh::Subdivision::Simple, "cube, bisection of the longest edge per level"},
+          std::tuple{"tetra", spheremesh::Subdivision::Tetrahedron, "tetrahedron, quadrisection per level"},
+          std::tuple{"octa", spheremesh::Subdivision::Octahedron, "octahedron, quadrisection per level"},
+          std::tuple{"icosa", spheremesh::Subdivision::Icosahedron, "icosahedron, quadrisection per level"}}) {
+      auto* sub = app->add_subcommand(name, std::string("iterative sphere mesh: ") + what);
+      sub->add_option("-l,--level", o.level, "subdivision level; 1 is the base polyhedron")->check(CLI::Range(1, 14));
+      sub->add_option("-r,--radius", o.radius, "sphere radius [length units]");
+      sub->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
+      cli::add_quiet_option(*sub, o.common);
+      schemes.emplace_back(sub, scheme);
+    }
+
+    auto& a = o.annealing;
+    auto* random = app->add_subcommand("random", "N annealed random points on the sphere + spherical Delaunay (A.2.2)");
+    random->add_option("-n,--points", a.points, "number of vertices N (>= 4)")->required();
+    random->add_option("-r,--radius", a.radius, "sphere radius R [length units]; r_v = 2R/sqrt(N)");
+    random->add_option("--tmax", a.t_max, "first annealing temperature [energy units]");
+    random->add_option("--tmin", a.t_min, "last annealing temperature (T_end) [energy units]");
+    random->add_option("--anneals", a.anneals, "number of temperatures, exponentially spaced");
+    random->add_option("--sweeps", a.sweeps_per_anneal, "Monte Carlo sweeps (N trial moves each) per temperature");
+    random->add_option("--epsilon", a.epsilon, "energy scale of the repulsive LJ-8 pair potential [energy units]");
+    random->add_option("--cutoff", a.cutoff_sigmas, "pair cut-off [sigma = 2 r_v]");
+    random->add_option("--step", a.step_sigmas, "largest trial displacement per axis [sigma]");
+    random->add_option("--seed", a.seed, "seed of the random number generator; same seed, same mesh");
+    random->add_option("--trace", o.trace, "also write temperature, acceptance and energy per anneal to this CSV");
+    random->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
+    cli::add_quiet_option(*random, o.common);
+
+    auto* stats = app->add_subcommand("stats", "quality metrics (A.3) of closed triangle meshes, one CSV row per file");
+    stats->add_option("meshes", o.inputs, "OFF files ('-': stdin)")->required();
+    stats->add_option("-o,--output", o.output, "output CSV file ('-': stdout)");
+    cli::add_threads_option(*stats, o.common);
+    cli::add_quiet_option(*stats, o.common);
+
+    cli::parse(*app, argc, argv);
+    cli::apply_threads(o.common);
+    const std::string provenance = cli::provenance("rndmesh", argc, argv);
+
+    for (const auto& [sub, scheme] : schemes)
+      if (sub->parsed()) {
+        cli::OptionChecks checks;
+        checks.require(o.radius > 0 && std::isfinite(o.radius), fmt::format("--radius must be positive, got {}", o.radius));
+        checks.throw_if_any();
+        run_subdivision(o, scheme, provenance);
+      }
+    if (random->parsed()) run_random(o, provenance);
+    if (stats->parsed()) run_stats(o, provenance);
+    return 0;
+  });
+}
