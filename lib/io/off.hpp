@@ -9,10 +9,12 @@
 //   # box Lx Ly Lz
 //   # periodic 1 1 1        (one 0/1 flag per axis)
 //   # shells K n1 n2 ... nK (vertex counts, shell after shell; they add up to nV)
-// and stays a valid OFF that MeshLab and ParaView open.
+// and stays a valid OFF that MeshLab and ParaView open. Shell k owns the vertices
+// [n1+...+n(k-1), n1+...+nk), and each face uses the vertices of one shell only.
 #include "mesh/tri_mesh.hpp"
 #include <array>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -37,9 +39,23 @@ struct OffFile {
 OffFile read_off(const std::string& path);
 
 // Writes atomically (see AtomicOutput). Comments go right after the OFF line as "# <text>",
-// then the packing lines when packing is given. Coordinates round-trip exactly.
+// then the packing lines when packing is given. Coordinates round-trip exactly. Throws
+// cmp::InputError(path, 0, ...) when the file cannot be written, else as the stream form.
 void write_off(const std::string& path, const mesh::VertexMatrix& V, const mesh::FaceMatrix& F,
                const std::vector<std::string>& comments = {},
                const PackingInfo* packing = nullptr);
+
+// Same, to a stream (no atomicity: the caller owns the stream). Throws std::invalid_argument
+// when F indexes past V, a comment starts with a packing keyword (box, periodic, shells) or
+// the packing is inconsistent with V and F (counts not adding up to #V, a face spanning two
+// shells, a box side not positive); cmp::ComputationError when a coordinate is NaN or Inf.
+void write_off(std::ostream& out, const mesh::VertexMatrix& V, const mesh::FaceMatrix& F,
+               const std::vector<std::string>& comments = {},
+               const PackingInfo* packing = nullptr);
+
+// First vertex of each shell and one past the last: K+1 offsets, offsets[0] = 0,
+// offsets[K] = #V. Shell k owns rows [offsets[k], offsets[k+1]) of V. Empty when
+// shell_vertex_counts is empty.
+std::vector<int> shell_vertex_offsets(const PackingInfo& packing);
 
 }  // namespace cmp::io

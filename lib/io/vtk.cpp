@@ -1,0 +1,277 @@
+#include "io/vtk.hpp"
+
+#include "core/errors.hpp"
+#include "io/atomic_output.hpp"
+#include "io/line_reader.hpp"
+#include "io/parse_number.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <sys/stat.h>
+
+namespace cmp::io {
+
+namespace {
+
+constexpr std::size_t kChunk = 1 << 16;  // values per chunk when converting byte order
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+// Reverses the bytes of each value in place (the legacy format is big-endian).
+template <class T>
+void swap_bytes(T* values, std::size_t n) {
+  if constexpr (sizeof(T) > 1 && std::endian::native == std::endian::little) {
+    auto* bytes = reinterpret_cast<unsigned char*>(values);
+    for (std::size_t i = 0; i < n; ++i)
+      std::reverse(bytes + i * sizeof(T), bytes + (i + 1) * sizeof(T));
+  }
+}
+
+// Tokens of the next non-blank line; at the end of the file, says what was expected.
+const std::vector<std::string_view>& keyword_line(LineReader& in, const char* expected) {
+  do {
+    if (!in.next()) in.fail_end(std::string("expected ") + expected);
+  } while (in.blank());
+  return in.tokens();
+}
+
+Eigen::Vector3d three_numbers(LineReader& in, const std::vector<std::string_view>& t,
+                              const char* what, bool positive) {
+  if (t.size() != 4) in.fail(fmt::format("expected '{} x y z', got {} fields", t[0], t.size()));
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) {
+    v[i] = parse_double(t[i + 1], in.path(), in.line_number(), what);
+    if (positive && !(v[i] > 0))
+      in.fail(fmt::format("{} {} is not positive", what, quote_token(t[i + 1])));
+  }
+  return v;
+}
+
+VtkInfo parse_header(LineReader& in) {
+  VtkInfo info;
+  if (!in.next()) in.fail_end("expected '# vtk DataFile Version x.x'");
+  if (!in.line().starts_with("# vtk DataFile Version"))
+    in.fail("not a VTK legacy file: expected '# vtk DataFile Version x.x' on the first line");
+  if (!in.next()) in.fail_end("expected the title line");
+  info.title = in.line();
+  if (!in.next()) in.fail_end("expected ASCII or BINARY");
+  const auto mode = in.tokens().size() == 1 ? lower(in.tokens()[0]) : std::string();
+  if (mode != "ascii" && mode != "binary")
+    in.fail("expected ASCII or BINARY on the third line, got '" + in.line() + "'");
+  info.binary = mode == "binary";
+
+  auto t = keyword_line(in, "DATASET STRUCTURED_POINTS");
+  if (lower(t[0]) != "dataset" || t.size() != 2)
+    in.fail("expected 'DATASET STRUCTURED_POINTS', got '" + in.line() + "'");
+  if (lower(t[1]) != "structured_points")
+    in.fail("dataset " + quote_token(t[1]) + " is not supported: expected STRUCTURED_POINTS");
+
+  bool have_dims = false, have_origin = false, have_spacing = false;
+  while (true) {
+    t = keyword_line(in, "POINT_DATA");
+    const auto key = lower(t[0]);
+    const auto once = [&](bool& seen) {
+      if (seen) in.fail("second " + std::string(t[0]) + " line");
+      seen = true;
+    };
+    if (key == "dimensions") {
+      once(have_dims);
+      if (t.size() != 4)
+        in.fail(fmt::format("expected 'DIMENSIONS nx ny nz', got {} fields", t.size()));
+      for (int i = 0; i < 3; ++i)
+        info.dims[i] = static_cast<int>(
+            parse_integer(t[i + 1], in.path(), in.line_number(), "a dimension", 1, INT_MAX));
+    } else if (key == "origin") {
+      once(have_origin);
+      info.origin = three_numbers(in, t, "an origin coordinate", false);
+    } else if (key == "spacing" || key == "aspect_ratio") {  // ASPECT_RATIO: VTK 1.0/2.0
+      once(have_spacing);
+      info.spacing = three_numbers(in, t, "a spacing", true);
+    } else if (key == "point_data") {
+      break;
+    } else if (key == "cell_data") {
+      in.fail("CELL_DATA is not supported: expected POINT_DATA (values on the grid points)");
+    } else {
+      in.fail("unexpected " + quote_token(t[0]) + " in a STRUCTURED_POINTS header");
+    }
+  }
+  if (!have_dims) in.fail("POINT_DATA before DIMENSIONS");
+  if (t.size() != 2) in.fail("expected 'POINT_DATA n'");
+  const auto n = parse_integer(t[1], in.path(), in.line_number(), "the number of points", 0);
+  if (static_cast<unsigned long long>(n) != info.size())
+    in.fail(fmt::format("POINT_DATA {} disagrees with DIMENSIONS {} {} {} ({} points)", n,
+                        info.dims[0], info.dims[1], info.dims[2], info.size()));
+
+  t = keyword_line(in, "SCALARS name type");
+  if (lower(t[0]) != "scalars")
+    in.fail("expected 'SCALARS name type' (one scalar field), got " + quote_token(t[0]));
+  if (t.size() < 3 || t.size() > 4) in.fail("expected 'SCALARS name type [1]'");
+  info.name = t[1];
+  info.type = lower(t[2]);
+  info.scalars_line = in.line_number();
+  if (t.size() == 4 && t[3] != "1")
+    in.fail("SCALARS with " + quote_token(t[3]) + " components: only 1 is supported");
+  t = keyword_line(in, "LOOKUP_TABLE");
+  if (lower(t[0]) != "lookup_table" || t.size() != 2)
+    in.fail("expected 'LOOKUP_TABLE default' after SCALARS, got '" + in.line() + "'");
+  info.data_line = in.line_number() + 1;
+  return info;
+}
+
+template <class T>
+void read_ascii(LineReader& in, const VtkInfo& info, std::vector<T>& data) {
+  const std::size_t n = info.size();
+  const std::string what = "a value of type " + info.type;
+  while (data.size() < n) {
+    if (!in.next()) in.fail_end(fmt::format("expected {} values, got {}", n, data.size()));
+    for (const auto token : in.tokens()) {
+      if (data.size() == n) in.fail(fmt::format("more than the {} values of POINT_DATA", n));
+      if constexpr (std::same_as<T, float>) {
+        data.push_back(parse_float(token, in.path(), in.line_number(), what));
+      } else if constexpr (std::same_as<T, double>) {
+        data.push_back(parse_double(token, in.path(), in.line_number(), what));
+      } else {
+        constexpr long long lo = std::same_as<T, std::uint8_t> ? 0 : INT_MIN;
+        constexpr long long hi = std::same_as<T, std::uint8_t> ? 255 : INT_MAX;
+        data.push_back(
+            static_cast<T>(parse_integer(token, in.path(), in.line_number(), what, lo, hi)));
+      }
+    }
+  }
+  while (in.next())
+    if (!in.blank()) in.fail(fmt::format("more than the {} values of POINT_DATA", n));
+}
+
+template <class T>
+void read_binary(LineReader& in, const VtkInfo& info, std::vector<T>& data) {
+  const std::size_t n = info.size();
+  const std::size_t bytes = n * sizeof(T);
+  auto& stream = in.stream();
+  const auto truncated = [&](std::size_t got) {
+    throw InputError(in.path(), info.data_line,
+                     fmt::format("unexpected end of file: expected {} values of {} ({} bytes), "
+                                 "got {} bytes",
+                                 n, info.type, bytes, got));
+  };
+  // For a regular file, say so before allocating for dimensions the file cannot hold.
+  struct stat st {};
+  if (in.path() != "-" && ::stat(in.path().c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+    const auto pos = static_cast<long long>(stream.tellg());
+    if (pos >= 0 && static_cast<unsigned long long>(st.st_size - pos) < bytes)
+      truncated(static_cast<std::size_t>(st.st_size - pos));
+  }
+  data.resize(n);
+  stream.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(bytes));
+  if (static_cast<std::size_t>(stream.gcount()) != bytes)
+    truncated(static_cast<std::size_t>(stream.gcount()));
+  swap_bytes(data.data(), n);
+  // Only whitespace (usually one newline) may follow: a second field would go unread.
+  char c;
+  while (stream.get(c))
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      throw InputError(in.path(), 0,
+                       fmt::format("unexpected content after the {} values (only "
+                                   "one SCALARS field is supported)",
+                                   n));
+}
+
+template <class T>
+void check_image(const VoxelImage<T>& image) {
+  for (int d : image.dims)
+    if (d < 1) throw std::invalid_argument("write_vtk: every dimension must be at least 1");
+  if (image.data.size() != image.size())
+    throw std::invalid_argument(fmt::format("write_vtk: {} values for a {}x{}x{} image",
+                                            image.data.size(), image.dims[0], image.dims[1],
+                                            image.dims[2]));
+  if (!image.origin.allFinite()) throw std::invalid_argument("write_vtk: origin not finite");
+  for (int i = 0; i < 3; ++i)
+    if (!(image.spacing[i] > 0) || !std::isfinite(image.spacing[i]))
+      throw std::invalid_argument("write_vtk: spacing must be positive and finite");
+  if (image.name.empty() || image.name.find_first_of(" \t\r\n\v\f") != std::string::npos)
+    throw std::invalid_argument("write_vtk: scalar name '" + image.name +
+                                "' is empty or holds whitespace");
+}
+
+}  // namespace
+
+VtkInfo read_vtk_info(const std::string& path) {
+  LineReader in(path);
+  return parse_header(in);
+}
+
+template <VtkScalar T>
+VoxelImage<T> read_vtk(const std::string& path) {
+  LineReader in(path);
+  const auto info = parse_header(in);
+  if (info.type != vtk_type_name<T>())
+    throw InputError(
+        path, info.scalars_line,
+        fmt::format("scalar type is '{}', expected '{}'", info.type, vtk_type_name<T>()));
+  VoxelImage<T> image;
+  image.dims = info.dims;
+  image.origin = info.origin;
+  image.spacing = info.spacing;
+  image.name = info.name;
+  if (info.binary)
+    read_binary(in, info, image.data);
+  else
+    read_ascii(in, info, image.data);
+  return image;
+}
+
+template <VtkScalar T>
+void write_vtk(std::ostream& out, const VoxelImage<T>& image, const std::string& title) {
+  check_image(image);
+  std::string t = title.substr(0, 255);
+  std::replace(t.begin(), t.end(), '\n', ' ');
+  std::replace(t.begin(), t.end(), '\r', ' ');
+  const auto& o = image.origin;
+  const auto& s = image.spacing;
+  out << fmt::format(
+      "# vtk DataFile Version 3.0\n{}\nBINARY\nDATASET STRUCTURED_POINTS\n"
+      "DIMENSIONS {} {} {}\nORIGIN {} {} {}\nSPACING {} {} {}\nPOINT_DATA {}\n"
+      "SCALARS {} {} 1\nLOOKUP_TABLE default\n",
+      t, image.dims[0], image.dims[1], image.dims[2], o[0], o[1], o[2], s[0], s[1], s[2],
+      image.size(), image.name, vtk_type_name<T>());
+  std::vector<T> chunk(std::min(kChunk, image.data.size()));
+  for (std::size_t start = 0; start < image.data.size(); start += kChunk) {
+    const std::size_t n = std::min(kChunk, image.data.size() - start);
+    std::copy_n(image.data.begin() + static_cast<std::ptrdiff_t>(start), n, chunk.begin());
+    swap_bytes(chunk.data(), n);
+    out.write(reinterpret_cast<const char*>(chunk.data()),
+              static_cast<std::streamsize>(n * sizeof(T)));
+  }
+  out << '\n';  // readers such as meshio expect a line break after the binary block
+}
+
+template <VtkScalar T>
+void write_vtk(const std::string& path, const VoxelImage<T>& image, const std::string& title) {
+  check_image(image);
+  AtomicOutput out(path);
+  write_vtk(out.stream(), image, title);
+  out.commit();
+}
+
+#define CMP_VTK_INSTANTIATE(T)                                                         \
+  template VoxelImage<T> read_vtk<T>(const std::string&);                              \
+  template void write_vtk<T>(std::ostream&, const VoxelImage<T>&, const std::string&); \
+  template void write_vtk<T>(const std::string&, const VoxelImage<T>&, const std::string&);
+CMP_VTK_INSTANTIATE(std::uint8_t)
+CMP_VTK_INSTANTIATE(std::int32_t)
+CMP_VTK_INSTANTIATE(float)
+CMP_VTK_INSTANTIATE(double)
+#undef CMP_VTK_INSTANTIATE
+
+}  // namespace cmp::io

@@ -1,0 +1,129 @@
+// lib/io/atomic_output.hpp: a file appears under its final name only when complete.
+#include "io/atomic_output.hpp"
+
+#include "io_test_support.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+using namespace cmp;
+using namespace cmp::io;
+using namespace cmp::io::test;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+TEST_CASE("AtomicOutput shows the file only after commit", "[atomic_output]") {
+  TempDir dir;
+  const auto path = dir.file("out.txt");
+  AtomicOutput out(path);
+  out.stream() << "hello\n";
+  // Before commit: only the hidden temporary file, in the same folder.
+  auto names = dir.entries();
+  REQUIRE(names.size() == 1);
+  CHECK_THAT(names[0], StartsWith(".out.txt.tmp."));
+  out.commit();
+  CHECK(dir.entries() == std::vector<std::string>{"out.txt"});
+  CHECK(read_text(path) == "hello\n");
+  CHECK(out.path() == path);
+}
+
+TEST_CASE("AtomicOutput gives the file mode 0644 minus the umask", "[atomic_output]") {
+  TempDir dir;
+  const mode_t old = ::umask(027);
+  {
+    AtomicOutput out(dir.file("a"));
+    out.stream() << "x";
+    out.commit();
+  }
+  ::umask(old);
+  struct stat st {};
+  REQUIRE(::stat(dir.file("a").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0640);
+}
+
+TEST_CASE("AtomicOutput without commit leaves nothing, and keeps an older file",
+          "[atomic_output]") {
+  TempDir dir;
+  const auto path = dir.file("result.csv");
+  SECTION("abandoned") {
+    {
+      AtomicOutput out(path);
+      out.stream() << "partial";
+    }
+    CHECK(dir.entries().empty());
+  }
+  SECTION("an exception before commit") {
+    write_text(path, "old contents\n");
+    try {
+      AtomicOutput out(path);
+      out.stream() << "half a fi";
+      throw std::runtime_error("interrupted");
+    } catch (const std::runtime_error&) {
+    }
+    CHECK(dir.entries() == std::vector<std::string>{"result.csv"});
+    CHECK(read_text(path) == "old contents\n");
+  }
+}
+
+TEST_CASE("AtomicOutput replaces an existing file on commit", "[atomic_output]") {
+  TempDir dir;
+  const auto path = dir.file("f");
+  write_text(path, "old");
+  AtomicOutput out(path);
+  out.stream() << "new";
+  out.commit();
+  out.commit();  // a second commit does nothing
+  CHECK(read_text(path) == "new");
+  CHECK(dir.entries() == std::vector<std::string>{"f"});
+}
+
+TEST_CASE("AtomicOutput reports folders it cannot write", "[atomic_output]") {
+  TempDir dir;
+  SECTION("missing folder") {
+    const auto path = dir.file("missing/out.txt");
+    CHECK(input_error([&] { AtomicOutput out(path); }) ==
+          path + ": cannot write: No such file or directory");
+  }
+  SECTION("the target is a folder: the rename fails and the temporary file goes") {
+    std::filesystem::create_directory(dir.file("sub"));
+    const auto msg = input_error([&] {
+      AtomicOutput out(dir.file("sub"));
+      out.stream() << "x";
+      out.commit();
+    });
+    CHECK_THAT(msg, StartsWith(dir.file("sub") + ": cannot write: "));
+    CHECK(dir.entries() == std::vector<std::string>{"sub"});
+  }
+  SECTION("a folder without write permission") {
+    if (::geteuid() == 0) return;  // root writes anywhere
+    std::filesystem::create_directory(dir.file("ro"));
+    std::filesystem::permissions(
+        dir.file("ro"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    const auto path = dir.file("ro/out.txt");
+    CHECK(input_error([&] { AtomicOutput out(path); }) ==
+          path + ": cannot write: Permission denied");
+    std::filesystem::permissions(dir.file("ro"), std::filesystem::perms::owner_all);
+  }
+  SECTION("an empty name") {
+    CHECK_THAT(input_error([&] { AtomicOutput out(""); }), Contains("cannot write"));
+  }
+}
+
+TEST_CASE("AtomicOutput writes standard output for '-'", "[atomic_output]") {
+  StdoutTo capture;
+  AtomicOutput out("-");
+  out.stream() << "to stdout\n";
+  out.commit();
+  CHECK(capture.text() == "to stdout\n");
+}
+
+TEST_CASE("AtomicOutput reports a full disk at commit", "[atomic_output]") {
+  // /dev/full accepts the open and fails every write; its folder is not writable for a
+  // temporary file, so simulate by writing more than the buffer to a stream in a failed state.
+  TempDir dir;
+  const auto path = dir.file("x");
+  AtomicOutput out(path);
+  out.stream().setstate(std::ios::badbit);  // what a failed write leaves behind
+  CHECK_THAT(input_error([&] { out.commit(); }), StartsWith(path + ": write error"));
+  CHECK(dir.entries().empty());
+}
