@@ -4,6 +4,7 @@
 //   F  #F by 3 vertex indices of each triangle, counter-clockwise seen from outside
 // Every function of lib/mesh is a free function over (V, F).
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products, used by most of lib/mesh
 
 namespace cmp::mesh {
 

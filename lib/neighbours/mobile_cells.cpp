@@ -34,7 +34,7 @@ void MobileCells::grow(int min_capacity) {
   while (capacity < min_capacity) capacity *= 2;
   if (capacity == capacity_) return;
   const std::size_t cells = counts_.size();
-  std::vector<double> x(cells * capacity, kFarAway), y(x), z(x);
+  std::vector<float> x(cells * capacity, kFarAway), y(x), z(x);
   std::vector<int> ids(cells * capacity, -1);
   for (std::size_t c = 0; c < cells; ++c)
     for (int k = 0; k < counts_[c]; ++k) {
@@ -49,7 +49,8 @@ void MobileCells::grow(int min_capacity) {
 void MobileCells::append(int i, int cell, const Eigen::Vector3d& p) {
   if (counts_[cell] + 1 > capacity_) grow(counts_[cell] + kLanes);
   const std::size_t s = static_cast<std::size_t>(cell) * capacity_ + counts_[cell]++;
-  x_[s] = p[0], y_[s] = p[1], z_[s] = p[2], ids_[s] = i;
+  x_[s] = static_cast<float>(p[0]), y_[s] = static_cast<float>(p[1]), z_[s] = static_cast<float>(p[2]);
+  ids_[s] = i;
   cell_[i] = cell, slot_[i] = static_cast<int>(s);
 }
 
@@ -83,7 +84,7 @@ void MobileCells::move(int i, const Eigen::Vector3d& p) {
   const int cell = cell_of(p);
   if (cell == cell_[i]) {
     const std::size_t s = slot_[i];
-    x_[s] = p[0], y_[s] = p[1], z_[s] = p[2];
+    x_[s] = static_cast<float>(p[0]), y_[s] = static_cast<float>(p[1]), z_[s] = static_cast<float>(p[2]);
     return;
   }
   remove(i);

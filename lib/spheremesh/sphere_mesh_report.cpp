@@ -22,6 +22,13 @@ double median(std::vector<double> v) {
   return 0.5 * (*mid + *std::max_element(v.begin(), mid));
 }
 
+double mean(const std::vector<double>& v) {
+  if (v.empty()) return NAN;
+  double sum = 0;
+  for (double x : v) sum += x;
+  return sum / static_cast<double>(v.size());
+}
+
 std::vector<double> finite_ratios(const Eigen::VectorXd& radii, double scale) {
   std::vector<double> out;
   for (double r : radii)
@@ -64,7 +71,8 @@ SphereMeshReport sphere_mesh_report(const mesh::VertexMatrix& V, const mesh::Fac
   r.curvature_min = thesis.empty() ? NAN : *std::min_element(thesis.begin(), thesis.end());
   r.curvature_max = thesis.empty() ? NAN : *std::max_element(thesis.begin(), thesis.end());
   r.curvature_median = median(thesis);
-  r.curvature_centroid_median = median(centroid_based);
+  r.curvature_mean = mean(thesis);
+  r.curvature_centroid_mean = mean(centroid_based);
   return r;
 }
 
@@ -95,9 +103,10 @@ std::vector<std::pair<std::string, std::string>> report_fields(const SphereMeshR
       {"volume_divergence_u3", num(r.volume_divergence)},
       {"volume_divergence_rel_error", num(r.volume_divergence_rel_error)},
       {"curvature_radius_min_rel", num(r.curvature_min)},
+      {"curvature_radius_mean_rel", num(r.curvature_mean)},
       {"curvature_radius_median_rel", num(r.curvature_median)},
       {"curvature_radius_max_rel", num(r.curvature_max)},
-      {"curvature_radius_centroid_median_rel", num(r.curvature_centroid_median)},
+      {"curvature_radius_centroid_mean_rel", num(r.curvature_centroid_mean)},
       {"flat_edges", integer(r.flat_edges)},
   };
 }

@@ -21,7 +21,8 @@ struct SphereMeshReport {
   double area_rel_error = 0, volume_tetra_rel_error = 0, volume_divergence_rel_error = 0;
   // R_est / mean_radius over the interior, non-flat edges (Eq. A.7 as printed), and the
   // median of the centroid-distance estimator (see mesh/edge_curvature.hpp).
-  double curvature_min = 0, curvature_median = 0, curvature_max = 0, curvature_centroid_median = 0;
+  double curvature_min = 0, curvature_mean = 0, curvature_median = 0, curvature_max = 0;
+  double curvature_centroid_mean = 0;
   long flat_edges = 0;  // edges whose two faces are coplanar: no finite estimate
 };
 

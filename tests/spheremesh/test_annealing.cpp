@@ -6,6 +6,8 @@
 #include "spheremesh/annealing.hpp"
 #include "spheremesh/spherical_delaunay.hpp"
 
+#include "core/errors.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -54,7 +56,8 @@ TEST_CASE("Linked-cell energy equals the brute-force energy", "[annealing]") {
     p.t_max = 5, p.t_min = 1;
     const auto result = spheremesh::anneal_on_sphere(p);
     INFO("N = " << n);
-    CHECK(result.energy == Approx(spheremesh::total_energy_brute_force(result.points, p)).epsilon(1e-10));
+    // single-precision energies (annealing.cpp): agreement to 1e-5 relative
+    CHECK(result.energy == Approx(spheremesh::total_energy_brute_force(result.points, p)).epsilon(1e-5));
     CHECK(result.attempted == 6LL * n);
     CHECK(result.points.rowwise().norm().maxCoeff() == Approx(2.5).epsilon(1e-14));
     CHECK(result.points.rowwise().norm().minCoeff() == Approx(2.5).epsilon(1e-14));

@@ -4,6 +4,8 @@
 #include "spheremesh/spherical_delaunay.hpp"
 #include "spheremesh/subdivision.hpp"
 
+#include "core/errors.hpp"
+
 #include <catch2/catch.hpp>
 
 using namespace cmp;
@@ -25,7 +27,11 @@ long hull_violations(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F) {
 
 TEST_CASE("Spherical Delaunay of random points is a closed, outward, Delaunay mesh", "[delaunay]") {
   for (int n : {4, 5, 17, 100, 1000}) {
-    const auto points = spheremesh::random_points_on_sphere(n, 1.7, 42 + n);
+    // Random points would often leave a hemisphere empty for small N (P = 7/8 for N = 4):
+    // a short anneal spreads them over the sphere, as rndmesh does.
+    spheremesh::AnnealingParameters p;
+    p.points = n, p.radius = 1.7, p.seed = 42 + n, p.anneals = 5, p.sweeps_per_anneal = 5, p.t_max = 1;
+    const auto points = spheremesh::anneal_on_sphere(p).points;
     const auto faces = spheremesh::spherical_delaunay(points);
     INFO("N = " << n);
     CHECK(faces.rows() == 2 * n - 4);
@@ -47,6 +53,10 @@ TEST_CASE("Spherical Delaunay retriangulates an icosahedral mesh's vertices", "[
 }
 
 TEST_CASE("Spherical Delaunay refuses degenerate input", "[delaunay]") {
+  mesh::VertexMatrix hemisphere(5, 3);  // no point below the equator: no closed triangulation
+  hemisphere << 1, 0, 0.1, 0, 1, 0.1, -1, 0, 0.1, 0, -1, 0.1, 0, 0, 1;
+  for (Eigen::Index i = 0; i < 5; ++i) hemisphere.row(i).normalize();
+  CHECK_THROWS_AS(spheremesh::spherical_delaunay(hemisphere), ComputationError);
   mesh::VertexMatrix three(3, 3);
   three << 1, 0, 0, 0, 1, 0, 0, 0, 1;
   CHECK_THROWS_AS(spheremesh::spherical_delaunay(three), ComputationError);

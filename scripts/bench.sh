@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# make bench: performance figures for the README's table. Writes CSV files and a Markdown
+# table into the output folder and prints the table.
+set -euo pipefail
+build=${1:-build}
+out=${2:-out/bench}
+mkdir -p "$out"
+bench="$build/bench"
+machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores"
+stamp="$(date -u +%Y-%m-%d)"
+
+echo "== rndmesh: Monte Carlo annealing, thesis schedule (200 anneals x 100 sweeps), one core" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "stage,N,anneals,sweeps,seconds,trial_moves_per_s,ns_per_move,acceptance"
+  for n in 642 2562 10242; do "$bench/bench_spheremesh" anneal $n; done
+} | tee "$out/rndmesh_anneal.csv" >&2
+
+echo "== rndmesh: spherical Delaunay (CGAL), one core" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "stage,N,faces,seconds,points_per_s"
+  for n in 1000 10000 100000 1000000; do "$bench/bench_spheremesh" delaunay $n; done
+} | tee "$out/rndmesh_delaunay.csv" >&2
+
+/usr/bin/python3 scripts/bench_table.py "$out" "$machine" "$stamp" | tee "$out/table.md"

@@ -1,0 +1,27 @@
+"""Turns the CSV files of scripts/bench.sh into the Markdown table of the README."""
+import csv
+import sys
+from pathlib import Path
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+out, machine, stamp = Path(sys.argv[1]), sys.argv[2], sys.argv[3]
+print(f"Measured by `make bench` on {machine}, {stamp}.\n")
+print("| work | size | figure | reference (BENCHMARKS.md) |")
+print("|---|---|---|---|")
+anneal = out / "rndmesh_anneal.csv"
+if anneal.exists():
+    for r in rows(anneal):
+        print(f"| rndmesh random: annealing, 200 x 100 sweeps, 1 core | N = {r['N']} | "
+              f"{float(r['seconds']):.2f} s, {float(r['trial_moves_per_s']) / 1e6:.1f} M trial moves/s "
+              f"({float(r['ns_per_move']):.0f} ns/move) | thesis code 1.5-1.9 M moves/s |")
+delaunay = out / "rndmesh_delaunay.csv"
+if delaunay.exists():
+    for r in rows(delaunay):
+        print(f"| rndmesh: spherical Delaunay (CGAL), 1 core | N = {int(r['N']):,} | "
+              f"{float(r['seconds']):.3f} s ({float(r['points_per_s']) / 1e6:.2f} M points/s) | "
+              f"CGAL 10^6 points in 0.6-1.2 s |")
