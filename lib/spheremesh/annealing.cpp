@@ -71,8 +71,7 @@ mesh::VertexMatrix random_points_on_sphere(int n, double radius, std::uint64_t s
 namespace {
 
 // Verlet-list skin in units of sigma and the acceptance below which the list is used: the
-// fastest of skins 0.4-1.6 and thresholds 0.2-0.5 over the full schedule at N = 1000
-// (5.7 million trial moves/s against 3.6 for cells alone, on one AMD EPYC core).
+// fastest of skins 0.4-2 and thresholds 0.2-0.5 over the full default schedule at N = 1000.
 constexpr double kSkinSigmas = 1.0;
 constexpr double kListAcceptance = 0.3;
 

@@ -17,7 +17,9 @@ struct AnnealingParameters {
   int sweeps_per_anneal = 100;  // n_mc; a sweep is N trial moves of randomly chosen nodes
   double epsilon = 1.0;         // energy scale of the LJ-8 repulsion
   double cutoff_sigmas = 3.0;   // r_c in units of sigma = 2 r_v
-  double step_sigmas = 0.25;    // trial displacement: uniform in [-s, s] per Cartesian axis, s in sigma
+  // Trial displacement: uniform in [-s, s] per Cartesian axis, then back onto the sphere. The
+  // thesis is silent (Algorithm 2 is lost); its author's code draws +-0.25 sigma (digest 1(a)).
+  double step_sigmas = 0.25;
   std::uint64_t seed = 1;
 
   // Vertex size r_v from N pi r_v^2 = 4 pi R^2.

@@ -88,20 +88,30 @@ TEST_CASE("Same seed, same points; another seed, other points", "[annealing]") {
 }
 
 TEST_CASE("Full default schedule reaches the quality of Table A.5", "[annealing][thesis]") {
-  // Table A.5 (single runs): N=123: q_A .661 q_theta .729 q .829; N=400: .614 .624 .671;
-  // N=1111: .588 .617 .671. Each N here is held to the row of the next larger N, with a small
-  // allowance for run-to-run scatter of these extreme-value statistics.
+  // Table A.5 holds single runs of extreme-value statistics (q_A is a min/max ratio over all
+  // vertices), which scatter by about +-0.03 from seed to seed, and its rows are not monotonic
+  // in N (N = 625 is below N = 400 and 1111). Each N is held, on the mean of six seeds, to the
+  // lower of the thesis rows around it, less that scatter:
+  //   N = 100  vs N = 123:         q_A .661  q_theta .729  q .829
+  //   N = 500  vs N = 400 and 625: q_A .580  q_theta .605  q .644
+  //   N = 1000 vs N = 625 and 1111: the same.
   struct Case {
     int n;
     double q_area, q_angle, q;
   };
-  for (const Case c : {Case{100, 0.661, 0.729, 0.829}, Case{500, 0.588, 0.617, 0.671},
-                       Case{1000, 0.588, 0.617, 0.671}}) {
-    const auto q = annealed_quality(thesis_defaults(c.n, 7));
-    INFO("N = " << c.n << ": q_A " << q.q_area << " q_theta " << q.q_angle << " q " << q.q_radius_ratio);
-    CHECK(q.q_area >= c.q_area - 0.03);
-    CHECK(q.q_angle >= c.q_angle - 0.03);
-    CHECK(q.q_radius_ratio >= c.q - 0.03);
+  const double scatter = 0.03;
+  for (const Case c : {Case{100, 0.661, 0.729, 0.829}, Case{500, 0.580, 0.605, 0.644},
+                       Case{1000, 0.580, 0.605, 0.644}}) {
+    double q_area = 0, q_angle = 0, q = 0;
+    const int seeds = 6;
+    for (int seed = 1; seed <= seeds; ++seed) {
+      const auto m = annealed_quality(thesis_defaults(c.n, seed));
+      q_area += m.q_area / seeds, q_angle += m.q_angle / seeds, q += m.q_radius_ratio / seeds;
+    }
+    INFO("N = " << c.n << ": mean q_A " << q_area << " q_theta " << q_angle << " q " << q);
+    CHECK(q_area >= c.q_area - scatter);
+    CHECK(q_angle >= c.q_angle - scatter);
+    CHECK(q >= c.q - scatter);
   }
 }
 
