@@ -51,6 +51,17 @@ case_random_reproducible() {
   grep -q "^# closed_manifold=1" a.off || fail "not closed"
   grep -q "^# euler_characteristic=2" a.off || fail "euler"
 }
+case_random_seeds_parallel() {
+  # Four seeds on two threads: the same files as one seed at a time.
+  "$rndmesh" random -n 120 --seeds 3:6 --threads 2 --sweeps 5 --anneals 10 -o 'm_{seed}.off' -q || fail "seeds"
+  for s in 3 4 5 6; do
+    [ -f m_$s.off ] || fail "m_$s.off missing"
+    "$rndmesh" random -n 120 --seed $s --threads 1 --sweeps 5 --anneals 10 -o one.off -q || fail "seed $s"
+    cmp -s <(grep -v '^# rndmesh' m_$s.off) <(grep -v '^# rndmesh' one.off) || fail "seed $s differs"
+  done
+  expect_error 2 "{seed}" "$rndmesh" random -n 120 --seeds 1:2 -o out.off
+  expect_error 2 "seeds" "$rndmesh" random -n 120 --seeds 2:1 -o 'out_{seed}.off'
+}
 case_random_stdout_and_trace() {
   "$rndmesh" random -n 50 --sweeps 2 --anneals 5 --trace trace.csv -q > mesh.off || fail "stdout"
   [ "$(off_counts mesh.off)" = "50 96" ] || fail "stdout counts"
@@ -63,6 +74,23 @@ case_stats_csv() {
   grep -q "^file,vertices,faces" s.csv || fail "header: $(cat s.csv)"
   [ "$(grep -c '^o.off,18,32,48,2,1,1,0.57' s.csv)" = 2 ] || fail "rows: $(cat s.csv)"
   cat o.off | "$rndmesh" stats - | grep -q "^-,18,32" || fail "stdin"
+}
+case_meshio_reads_output() {
+  # What MeshLab and ParaView would open: meshio (a real OFF reader) reads rndmesh's files,
+  # comments and all, with the same vertices and triangles.
+  "$rndmesh" random -n 100 --sweeps 5 --anneals 10 -o r.off -q || fail "random"
+  "$rndmesh" simple --level 4 -o s.off -q || fail "simple"
+  /usr/bin/python3 - <<'PY' || fail "meshio"
+import meshio, numpy as np
+for name, nv, nf in (("r.off", 100, 196), ("s.off", 50, 96)):
+    m = meshio.read(name)
+    assert m.points.shape == (nv, 3), m.points.shape
+    tri = m.cells_dict["triangle"]
+    assert tri.shape == (nf, 3), tri.shape
+    # outward: the signed volume (1/6) sum a.(b x c) is positive
+    a, b, c = (m.points[tri[:, k]] for k in range(3))
+    assert np.einsum("ij,ij->i", a, np.cross(b, c)).sum() > 0
+PY
 }
 case_bad_missing_file() { expect_error 2 "nothing.off: cannot open" "$rndmesh" stats nothing.off -o out.csv; }
 case_bad_empty_file() { : > empty.off; expect_error 2 "empty.off.*empty" "$rndmesh" stats empty.off -o out.csv; }

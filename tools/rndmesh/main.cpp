@@ -3,6 +3,7 @@
 //   rndmesh random -n 1000 --seed 7 -o cell.off   annealed random points + spherical Delaunay
 //   rndmesh stats cell.off > cell.csv         quality metrics of any closed triangle mesh
 #include "cli/progress.hpp"
+#include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_output.hpp"
@@ -16,6 +17,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <atomic>
 #include <iostream>
 
 using namespace cmp;
@@ -29,61 +31,96 @@ struct Options {
   double radius = 1.0;
   spheremesh::AnnealingParameters annealing;
   std::string trace;                 // random: per-temperature CSV
+  std::string seeds;                 // random: FIRST:LAST, one mesh per seed
   std::vector<std::string> inputs;   // stats
 };
 
-// Writes the mesh with its provenance and quality as "# key=value" comments, and tells the
-// user on stderr how good it is.
-void write_mesh(const Options& o, const std::string& provenance, const mesh::TriMesh& m,
-                std::vector<std::string> comments) {
+// Writes the mesh with its provenance and quality as "# key=value" comments; returns a
+// one-line summary of how good it is, for stderr.
+std::string write_mesh(const Options& o, const std::string& provenance, const mesh::TriMesh& m,
+                       std::vector<std::string> comments) {
   const auto report = spheremesh::sphere_mesh_report(m.V, m.F);
   comments.insert(comments.begin(), provenance);
   for (const auto& [key, value] : spheremesh::report_fields(report)) comments.push_back(key + "=" + value);
   io::write_off(o.output, m.V, m.F, comments);
-  if (!o.common.quiet)
-    std::cerr << fmt::format("rndmesh: {} vertices, {} triangles, q_A={:.3f} q_theta={:.3f} q={:.3f}, "
-                             "area error {:.2e}, volume error {:.2e} -> {}\n",
-                             report.vertices, report.faces, report.q_area, report.q_angle,
-                             report.q_radius_ratio, report.area_rel_error,
-                             report.volume_divergence_rel_error, o.output == "-" ? "stdout" : o.output);
+  return fmt::format("{}: {} vertices, {} triangles, q_A={:.3f} q_theta={:.3f} q={:.3f}, area error {:.2e}, "
+                     "volume error {:.2e}",
+                     o.output == "-" ? "stdout" : o.output, report.vertices, report.faces, report.q_area,
+                     report.q_angle, report.q_radius_ratio, report.area_rel_error,
+                     report.volume_divergence_rel_error);
 }
 
 void run_subdivision(const Options& o, spheremesh::Subdivision scheme, const std::string& provenance) {
   const auto m = spheremesh::subdivided_sphere(scheme, o.level, o.radius);
-  write_mesh(o, provenance, m,
-             {"method=" + spheremesh::subdivision_name(scheme), "level=" + std::to_string(o.level),
-              "radius=" + io::format_number(o.radius)});
+  const auto summary = write_mesh(o, provenance, m,
+                                  {"method=" + spheremesh::subdivision_name(scheme), "level=" + std::to_string(o.level),
+                                   "radius=" + io::format_number(o.radius)});
+  if (!o.common.quiet) std::cerr << "rndmesh: " << summary << "\n";
+}
+
+void write_trace(const std::string& path, const std::string& provenance, const spheremesh::AnnealingResult& r) {
+  io::AtomicOutput out(path);
+  io::CsvWriter csv(out.stream());
+  csv.meta("provenance", provenance);
+  csv.header({"anneal", "temperature_en", "acceptance", "energy_per_point_en"});
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const auto& s = r.steps[i];
+    csv.row({std::to_string(i + 1), io::format_number(s.temperature), io::format_number(s.acceptance),
+             io::format_number(s.energy_per_point)});
+  }
+  out.commit();
 }
 
 void run_random(const Options& o, const std::string& provenance) {
-  const auto& p = o.annealing;
-  cli::ProgressBar bar("annealing", p.anneals, o.common.quiet);
-  const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int i, int) { bar.update(i); });
-  mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
-  if (!o.trace.empty()) {
-    io::AtomicOutput out(o.trace);
-    io::CsvWriter csv(out.stream());
-    csv.meta("provenance", provenance);
-    csv.header({"anneal", "temperature_en", "acceptance", "energy_per_point_en"});
-    for (std::size_t i = 0; i < annealed.steps.size(); ++i) {
-      const auto& s = annealed.steps[i];
-      csv.row({std::to_string(i + 1), io::format_number(s.temperature), io::format_number(s.acceptance),
-               io::format_number(s.energy_per_point)});
+  // One mesh per seed; seeds are independent Markov chains, run in parallel.
+  const auto seeds = o.seeds.empty() ? std::vector<std::uint64_t>{o.annealing.seed} : cli::parse_seed_range(o.seeds);
+  o.annealing.validate();
+  cli::OptionChecks checks;
+  const bool many = seeds.size() > 1;
+  checks.require(!many || o.output.find("{seed}") != std::string::npos,
+                 "-o must contain {seed} when --seeds names several seeds, e.g. -o 'cell_{seed}.off'");
+  checks.require(!many || o.trace.empty() || o.trace.find("{seed}") != std::string::npos,
+                 "--trace must contain {seed} when --seeds names several seeds");
+  checks.throw_if_any();
+  const long n = static_cast<long>(seeds.size());
+  cli::ProgressBar bar("annealing", static_cast<double>(n) * o.annealing.anneals, o.common.quiet);
+  std::atomic<long> anneals_done{0};
+  std::vector<std::exception_ptr> errors(n);
+  std::vector<std::string> summaries(n);
+#pragma omp parallel for schedule(dynamic)
+  for (long k = 0; k < n; ++k) {
+    try {
+      auto p = o.annealing;
+      p.seed = seeds[k];
+      const std::string seed = std::to_string(p.seed);
+      const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int, int) {
+        const long done = ++anneals_done;
+        if (omp_get_thread_num() == 0) bar.update(static_cast<double>(done));
+      });
+      const mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
+      Options single = o;
+      single.output = cli::expand_pattern(o.output, "seed", seed);
+      summaries[k] = write_mesh(
+          single, provenance, m,
+          {"method=random", "points=" + std::to_string(p.points), "radius=" + io::format_number(p.radius),
+           "vertex_radius=" + io::format_number(p.vertex_radius()), "seed=" + seed,
+           "T_max=" + io::format_number(p.t_max), "T_min=" + io::format_number(p.t_min),
+           "anneals=" + std::to_string(p.anneals), "sweeps_per_anneal=" + std::to_string(p.sweeps_per_anneal),
+           "epsilon=" + io::format_number(p.epsilon), "cutoff_sigma=" + io::format_number(p.cutoff_sigmas),
+           "step_sigma=" + io::format_number(p.step_sigmas),
+           "acceptance=" + io::format_number(static_cast<double>(annealed.accepted) / std::max(1LL, annealed.attempted)),
+           "final_energy_en=" + io::format_number(annealed.energy)});
+      summaries[k] += fmt::format(", Monte Carlo {:.2f} s ({:.3g} trial moves/s)", annealed.seconds,
+                                  annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0.0);
+      if (!o.trace.empty()) write_trace(cli::expand_pattern(o.trace, "seed", seed), provenance, annealed);
+    } catch (...) {
+      errors[k] = std::current_exception();
     }
-    out.commit();
   }
-  const double moves_per_second = annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0;
-  write_mesh(o, provenance, m,
-             {"method=random", "points=" + std::to_string(p.points), "radius=" + io::format_number(p.radius),
-              "vertex_radius=" + io::format_number(p.vertex_radius()), "seed=" + std::to_string(p.seed),
-              "T_max=" + io::format_number(p.t_max), "T_min=" + io::format_number(p.t_min),
-              "anneals=" + std::to_string(p.anneals), "sweeps_per_anneal=" + std::to_string(p.sweeps_per_anneal),
-              "epsilon=" + io::format_number(p.epsilon), "cutoff_sigma=" + io::format_number(p.cutoff_sigmas),
-              "step_sigma=" + io::format_number(p.step_sigmas),
-              "acceptance=" + io::format_number(static_cast<double>(annealed.accepted) / std::max(1LL, annealed.attempted)),
-              "final_energy_en=" + io::format_number(annealed.energy)});
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
   if (!o.common.quiet)
-    std::cerr << fmt::format("rndmesh: Monte Carlo {:.2f} s, {:.3g} trial moves/s\n", annealed.seconds, moves_per_second);
+    for (const auto& line : summaries) std::cerr << "rndmesh: " << line << "\n";
 }
 
 void run_stats(const Options& o, const std::string& provenance) {
@@ -154,7 +191,10 @@ int main(int argc, char** argv) {
     random->add_option("--epsilon", a.epsilon, "energy scale of the repulsive LJ-8 pair potential [energy units]");
     random->add_option("--cutoff", a.cutoff_sigmas, "pair cut-off [sigma = 2 r_v]");
     random->add_option("--step", a.step_sigmas, "largest trial displacement per axis [sigma]");
-    random->add_option("--seed", a.seed, "seed of the random number generator; same seed, same mesh");
+    auto* seed = random->add_option("--seed", a.seed, "seed of the random number generator; same seed, same mesh");
+    random->add_option("--seeds", o.seeds, "FIRST:LAST: one mesh per seed, in parallel; -o and --trace need {seed}")
+        ->excludes(seed);
+    cli::add_threads_option(*random, o.common);
     random->add_option("--trace", o.trace, "also write temperature, acceptance and energy per anneal to this CSV");
     random->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
     cli::add_quiet_option(*random, o.common);

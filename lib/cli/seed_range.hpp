@@ -1,0 +1,16 @@
+#pragma once
+// Many independent runs from one command: `--seeds 1:100` and output names with `{seed}`.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cmp::cli {
+
+// "7" -> {7}; "1:4" -> {1, 2, 3, 4} (inclusive). Throws cmp::UsageError naming `option`
+// for anything else, an empty range, or more than 10^6 seeds.
+std::vector<std::uint64_t> parse_seed_range(const std::string& text, const std::string& option = "--seeds");
+
+// Replaces every "{key}" in pattern by value: ("cell_{seed}.off", "seed", "7") -> "cell_7.off".
+std::string expand_pattern(const std::string& pattern, const std::string& key, const std::string& value);
+
+}  // namespace cmp::cli
