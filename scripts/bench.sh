@@ -25,4 +25,11 @@ echo "== rndmesh: spherical Delaunay (CGAL), one core" >&2
   for n in 1000 10000 100000 1000000; do "$bench/bench_spheremesh" delaunay $n; done
 } | tee "$out/rndmesh_delaunay.csv" >&2
 
+echo "== neighbours: Verlet list of 100k particles at phi = 0.64 (cutoff 1, skin 0.1)" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  "$bench/bench_neighbours"
+} | tee "$out/neighbours.csv" >&2
+
 /usr/bin/python3 scripts/bench_table.py "$out" "$machine" "$stamp" | tee "$out/table.md"

@@ -25,3 +25,9 @@ if delaunay.exists():
         print(f"| rndmesh: spherical Delaunay (CGAL), 1 core | N = {int(r['N']):,} | "
               f"{float(r['seconds']):.3f} s ({float(r['points_per_s']) / 1e6:.2f} M points/s) | "
               f"CGAL 10^6 points in 0.6-1.2 s |")
+neighbours = out / "neighbours.csv"
+if neighbours.exists():
+    for r in rows(neighbours):
+        print(f"| neighbour list build / force loop, {r['order']} | N = {int(r['N']):,}, {r['threads']} thread(s) | "
+              f"{float(r['build_ms']):.1f} ms / {float(r['force_loop_ms']):.1f} ms "
+              f"({float(r['pairs_per_particle']):.1f} neighbours each) | (foundation for shellpack) |")

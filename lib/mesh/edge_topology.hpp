@@ -11,7 +11,8 @@ struct EdgeTopology {
   std::vector<int> edge_face_counts;  // #E, how many faces contain edge e (2 on a closed manifold)
 };
 
-// Builds the edge list in O(#F log #F).
+// Builds the edge list in O(#F log #F). The side of a degenerate face that joins a vertex to
+// itself is not an edge and is left out; a face (a, a, b) puts both of its sides a-b on one edge.
 //   F  #F by 3 triangle indices
 EdgeTopology edge_topology(const FaceMatrix& F);
 
@@ -23,6 +24,7 @@ struct VertexAdjacency {
 };
 
 //   F  #F by 3, vertex_count  #V (vertices in no face get no neighbours)
+// Throws std::out_of_range when an index of F is outside [0, vertex_count).
 VertexAdjacency vertex_adjacency(const FaceMatrix& F, int vertex_count);
 
 }  // namespace cmp::mesh

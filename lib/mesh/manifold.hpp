@@ -20,7 +20,9 @@ struct ManifoldReport {
   std::string describe() const;    // one line, for error messages
 };
 
+// O(#F log #F).
 //   F  #F by 3, vertex_count  #V
+// Throws std::out_of_range when an index of F is outside [0, vertex_count).
 ManifoldReport manifold_report(const FaceMatrix& F, int vertex_count);
 
 // V - E + F over the vertices used by F.
