@@ -16,6 +16,14 @@ struct EdgeTopology {
 //   F  #F by 3 triangle indices
 EdgeTopology edge_topology(const FaceMatrix& F);
 
+// True when face f has the directed side u -> v in its corner order (so the face to the other
+// side of a consistently oriented edge has v -> u).
+inline bool face_has_side(const FaceMatrix& F, Eigen::Index f, int u, int v) {
+  for (int k = 0; k < 3; ++k)
+    if (F(f, k) == u && F(f, (k + 1) % 3) == v) return true;
+  return false;
+}
+
 // Vertex-vertex adjacency in compressed-row form: the neighbours of vertex i are
 // neighbours[offsets[i] .. offsets[i+1]), sorted ascending, each once.
 struct VertexAdjacency {

@@ -8,13 +8,6 @@
 namespace cmp::mesh {
 
 namespace {
-// True when face f has the side u -> v (in its corner order).
-bool traverses(const FaceMatrix& F, int f, int u, int v) {
-  for (int k = 0; k < 3; ++k)
-    if (F(f, k) == u && F(f, (k + 1) % 3) == v) return true;
-  return false;
-}
-
 long used_vertex_count(const FaceMatrix& F, int vertex_count) {
   std::vector<char> used(static_cast<std::size_t>(vertex_count), 0);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
@@ -58,7 +51,7 @@ ManifoldReport manifold_report(const FaceMatrix& F, int vertex_count) {
     if (count != 2) continue;
     const int u = t.edges(e, 0), v = t.edges(e, 1);
     if (t.edge_faces(e, 0) == t.edge_faces(e, 1)) continue;  // both sides of one degenerate face
-    if (traverses(F, t.edge_faces(e, 0), u, v) == traverses(F, t.edge_faces(e, 1), u, v)) ++r.misoriented_edges;
+    if (face_has_side(F, t.edge_faces(e, 0), u, v) == face_has_side(F, t.edge_faces(e, 1), u, v)) ++r.misoriented_edges;
   }
   return r;
 }

@@ -12,12 +12,6 @@
 namespace cmp::mesh {
 
 namespace {
-bool traverses(const FaceMatrix& F, int f, int u, int v) {
-  for (int k = 0; k < 3; ++k)
-    if (F(f, k) == u && F(f, (k + 1) % 3) == v) return true;
-  return false;
-}
-
 std::string edge_name(int u, int v) { return "(" + std::to_string(u) + ", " + std::to_string(v) + ")"; }
 
 // Up to three neighbours of every face across its interior edges, with the shared edge.
@@ -72,8 +66,8 @@ long orient_outward(const VertexMatrix& V, FaceMatrix& F) {
       members[id].push_back(f);
       for (const FaceNeighbour& n : adjacent[static_cast<std::size_t>(f)]) {
         if (n.face < 0) break;
-        const bool f_forward = traverses(F, f, n.u, n.v) != static_cast<bool>(flip[f]);
-        const bool g_forward_now = traverses(F, n.face, n.u, n.v);
+        const bool f_forward = face_has_side(F, f, n.u, n.v) != static_cast<bool>(flip[f]);
+        const bool g_forward_now = face_has_side(F, n.face, n.u, n.v);
         if (component[n.face] < 0) {
           component[n.face] = id;
           flip[n.face] = g_forward_now == f_forward;

@@ -103,6 +103,32 @@ std::string input_error(F&& f) {
   return {};
 }
 
+// A malformed file and the error it must give: "file:line: ..." containing `message`
+// (line 0: "file: ..." for the file as a whole).
+struct BadInputCase {
+  const char* what;
+  std::string text;
+  long line;
+  const char* message;
+};
+
+// Writes each case to `file_name` in a scratch folder, reads it with read(path), and checks
+// the error's location and message; one Catch2 section per case.
+template <class Read>
+void check_bad_inputs(const std::vector<BadInputCase>& cases, const std::string& file_name, Read&& read) {
+  TempDir dir;
+  for (const auto& c : cases) {
+    SECTION(c.what) {
+      const auto path = dir.file(file_name);
+      write_text(path, c.text);
+      const auto msg = input_error([&] { read(path); });
+      const auto prefix = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
+      CHECK_THAT(msg, Catch::Matchers::StartsWith(prefix));
+      CHECK_THAT(msg, Catch::Matchers::Contains(c.message));
+    }
+  }
+}
+
 // Replaces std::cin / std::cout by a string buffer for the lifetime of the object.
 class StdinFrom {
  public:

@@ -111,13 +111,7 @@ TEST_CASE("CSV reads standard input for '-'", "[csv]") {
 }
 
 TEST_CASE("CSV errors name the file and the line", "[csv]") {
-  struct Case {
-    const char* what;
-    std::string text;
-    long line;
-    const char* message;
-  };
-  const std::vector<Case> cases = {
+  const std::vector<BadInputCase> cases = {
       {"empty file", "", 0, "empty file"},
       {"meta but no header", "# a=1\n\n", 2, "unexpected end of file: no header row"},
       {"row too short", "a,b,c\n1,2,3\n4,5\n", 3, "row has 2 fields, the header has 3"},
@@ -128,17 +122,7 @@ TEST_CASE("CSV errors name the file and the line", "[csv]") {
       {"duplicate column", "x,y,x\n", 1, "column 'x' appears twice in the header"},
       {"meta without key", "# =3\na\n", 1, "without a key"},
   };
-  TempDir dir;
-  for (const auto& c : cases) {
-    SECTION(c.what) {
-      const auto path = dir.file("bad.csv");
-      write_text(path, c.text);
-      const auto msg = input_error([&] { read_csv(path); });
-      const auto prefix = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
-      CHECK_THAT(msg, StartsWith(prefix));
-      CHECK_THAT(msg, Contains(c.message));
-    }
-  }
+  check_bad_inputs(cases, "bad.csv", [](const std::string& path) { read_csv(path); });
 }
 
 TEST_CASE("CSV column and number errors point at the header and the row", "[csv]") {

@@ -143,15 +143,9 @@ TEST_CASE("OFF reads standard input and writes standard output for '-'", "[off]"
 }
 
 TEST_CASE("OFF errors name the file and the line", "[off]") {
-  struct Case {
-    const char* what;
-    std::string text;
-    long line;
-    const char* message;
-  };
   const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   const std::string pack = "OFF\n# shells 2 3 3\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n3 0 0\n2 1 0\n";
-  const std::vector<Case> cases = {
+  const std::vector<BadInputCase> cases = {
       {"empty file", "", 0, "empty file"},
       {"only blank lines", "\n  \n\n", 0, "empty file"},
       {"not OFF", "PLY\n", 1, "expected 'OFF' on the first line, got 'PLY'"},
@@ -200,17 +194,7 @@ TEST_CASE("OFF errors name the file and the line", "[off]") {
       {"packing line after the counts", "OFF\n3 1 0\n0 0 0\n# box 1 1 1\n", 4,
        "packing line '# box' must come before the counts line"},
   };
-  TempDir dir;
-  for (const auto& c : cases) {
-    SECTION(c.what) {
-      const auto path = dir.file("bad.off");
-      write_text(path, c.text);
-      const auto msg = input_error([&] { read_off(path); });
-      const auto prefix = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
-      CHECK_THAT(msg, StartsWith(prefix));
-      CHECK_THAT(msg, Contains(c.message));
-    }
-  }
+  check_bad_inputs(cases, "bad.off", [](const std::string& path) { read_off(path); });
 }
 
 TEST_CASE("OFF reader reports unreadable files", "[off]") {

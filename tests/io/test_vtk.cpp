@@ -127,14 +127,8 @@ TEST_CASE("VTK reads standard input and writes standard output for '-'", "[vtk]"
 }
 
 TEST_CASE("VTK errors name the file, the line and what was found", "[vtk]") {
-  struct Case {
-    const char* what;
-    std::string text;
-    long line;
-    const char* message;
-  };
   const std::string lut = "SCALARS v unsigned_char 1\nLOOKUP_TABLE default\n";
-  const std::vector<Case> cases = {
+  const std::vector<BadInputCase> cases = {
       {"empty file", "", 0, "empty file"},
       {"not VTK", "OFF\n", 1, "not a VTK legacy file"},
       {"no mode line", "# vtk DataFile Version 3.0\ntitle\n", 2,
@@ -179,17 +173,7 @@ TEST_CASE("VTK errors name the file, the line and what was found", "[vtk]") {
            lut + "abcd\nSCALARS w float\n",
        0, "unexpected content after the 4 values"},
   };
-  TempDir dir;
-  for (const auto& c : cases) {
-    SECTION(c.what) {
-      const auto path = dir.file("bad.vtk");
-      write_text(path, c.text);
-      const auto msg = input_error([&] { read_vtk<std::uint8_t>(path); });
-      const auto prefix = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
-      CHECK_THAT(msg, StartsWith(prefix));
-      CHECK_THAT(msg, Contains(c.message));
-    }
-  }
+  check_bad_inputs(cases, "bad.vtk", [](const std::string& path) { read_vtk<std::uint8_t>(path); });
 }
 
 TEST_CASE("VTK reader with the wrong type names the type found", "[vtk]") {

@@ -201,15 +201,9 @@ TEST_CASE("extended XYZ reads standard input and writes standard output for '-'"
 }
 
 TEST_CASE("extended XYZ errors name the file and the line", "[xyz]") {
-  struct Case {
-    const char* what;
-    std::string text;
-    long line;
-    const char* message;
-  };
   const std::string ok =
       "2\nProperties=species:S:1:pos:R:3:id:I:1:on:L:1\nH 0 0 0 1 T\nH 1 1 1 2 F\n";
-  const std::vector<Case> cases = {
+  const std::vector<BadInputCase> cases = {
       {"empty file", "", 0, "empty file"},
       {"count not a number", "two\n", 1, "expected the number of atoms, got 'two'"},
       {"count with more fields", "2 atoms\n", 1, "expected the number of atoms (one integer)"},
@@ -245,17 +239,7 @@ TEST_CASE("extended XYZ errors name the file and the line", "[xyz]") {
       {"unterminated quote in an extended line", "1\nLattice=\"1 0 0 Properties=pos:R:3\n0 0 0\n",
        2, "unterminated quote"},
   };
-  TempDir dir;
-  for (const auto& c : cases) {
-    SECTION(c.what) {
-      const auto path = dir.file("bad.xyz");
-      write_text(path, c.text);
-      const auto msg = input_error([&] { read_xyz(path); });
-      const auto prefix = c.line > 0 ? path + ":" + std::to_string(c.line) + ": " : path + ": ";
-      CHECK_THAT(msg, StartsWith(prefix));
-      CHECK_THAT(msg, Contains(c.message));
-    }
-  }
+  check_bad_inputs(cases, "bad.xyz", [](const std::string& path) { read_xyz(path); });
 }
 
 TEST_CASE("extended XYZ frame accessors check names, types and sizes", "[xyz]") {
