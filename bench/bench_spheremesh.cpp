@@ -1,5 +1,5 @@
 // Benchmarks of rndmesh's two stages, one CSV row per measurement on stdout:
-//   bench_spheremesh anneal N [anneals sweeps]   Monte Carlo at the thesis's schedule
+//   bench_spheremesh anneal N [anneals sweeps [T_max T_min]]   Monte Carlo (thesis schedule)
 //   bench_spheremesh delaunay N                   spherical Delaunay of N random points
 #include "core/version.hpp"
 #include "spheremesh/annealing.hpp"
@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
     p.points = n;
     p.radius = 1;
     if (argc > 4) p.anneals = std::atoi(argv[3]), p.sweeps_per_anneal = std::atoi(argv[4]);
+    if (argc > 6) p.t_max = std::atof(argv[5]), p.t_min = std::atof(argv[6]);
     const auto r = spheremesh::anneal_on_sphere(p);
-    fmt::print("anneal,{},{},{},{:.4f},{:.4g},{:.4g},{:.4f}\n", n, p.anneals, p.sweeps_per_anneal, r.seconds,
+    fmt::print("anneal,{},{},{},{},{},{:.4f},{:.4g},{:.4g},{:.4f}\n", n, p.anneals, p.sweeps_per_anneal, p.t_max, p.t_min, r.seconds,
                r.attempted / r.seconds, r.seconds / (static_cast<double>(p.anneals) * p.sweeps_per_anneal) / n * 1e9,
                static_cast<double>(r.accepted) / r.attempted);
   } else if (what == "delaunay") {

@@ -19,6 +19,12 @@ if anneal.exists():
         print(f"| rndmesh random: annealing, 200 x 100 sweeps, 1 core | N = {r['N']} | "
               f"{float(r['seconds']):.2f} s, {float(r['trial_moves_per_s']) / 1e6:.1f} M trial moves/s "
               f"({float(r['ns_per_move']):.0f} ns/move) | thesis code 1.5-1.9 M moves/s |")
+decades = out / "rndmesh_anneal_decades.csv"
+if decades.exists():
+    for r in rows(decades):
+        print(f"| rndmesh random: one temperature decade, 50 x 100 sweeps, 1 core | N = {r['N']}, "
+              f"T {r['T_max']} to {r['T_min']} | {float(r['trial_moves_per_s']) / 1e6:.1f} M trial moves/s, "
+              f"acceptance {float(r['acceptance']):.2f} | thesis code 1.5-1.9 M moves/s |")
 delaunay = out / "rndmesh_delaunay.csv"
 if delaunay.exists():
     for r in rows(delaunay):
