@@ -13,13 +13,17 @@ step "rndmesh: 642 annealed random points + spherical Delaunay (thesis schedule)
 "$bin/rndmesh" random -n 642 --seed 7 --trace "$out/anneal.csv" -o "$out/cell.off"
 step "rndmesh: quality metrics of both meshes"
 "$bin/rndmesh" stats "$out/icosa4.off" "$out/cell.off" -o "$out/mesh_stats.csv"
-cut -d, -f1-10 "$out/mesh_stats.csv" | column -t -s, >&2
+grep -v '^#' "$out/mesh_stats.csv" | awk -F, 'NR == 1 { printf "%-22s %8s %6s %7s %7s %7s %12s\n", $1, $2, $3, $8, $9, $10, $19; next }
+  { printf "%-22s %8d %6d %7.3f %7.3f %7.3f %12.2e\n", $1, $2, $3, $8, $9, $10, $19 }' >&2
+step "gnuplot: the annealing trace"
+gnuplot -e "in='$out/anneal.csv'; out='$out/anneal.png'" scripts/plot_anneal.gp
 
 cat >&2 <<EOT
 
 Outputs in $out/:
   icosa4.off      icosahedral mesh (MeshLab, ParaView)
   cell.off        Monte Carlo mesh, N = 642 (MeshLab, ParaView)
-  anneal.csv      temperature, acceptance and energy per anneal (gnuplot)
+  anneal.csv      temperature, acceptance and energy per anneal
+  anneal.png      the same as a figure (gnuplot, scripts/plot_anneal.gp)
   mesh_stats.csv  quality metrics of both meshes, one row each
 EOT
