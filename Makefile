@@ -8,7 +8,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
-  python3 python3-numpy python3-scipy python3-ase python3-meshio
+  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio
 
 .PHONY: all deps configure test test-asan bench run install clean
 
@@ -48,8 +48,13 @@ bench: deps all
 run: deps all
 	@scripts/demo.sh $(BUILD) $(OUT)/demo
 
+# Programs into $(DESTDIR)$(PREFIX)/bin, man pages made from their --help into share/man/man1.
 install: all
-	cmake --install $(BUILD) --prefix $(DESTDIR)$(PREFIX)
+	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
+	mkdir -p $(DESTDIR)$(PREFIX)/share/man/man1
+	for tool in $(BUILD)/bin/*; do \
+	  help2man --no-info --no-discard-stderr --help-option=--help-all "$$tool" > $(DESTDIR)$(PREFIX)/share/man/man1/$$(basename $$tool).1; \
+	done
 
 clean:
 	rm -rf $(BUILD) build-asan $(OUT)

@@ -49,6 +49,7 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
 std::unique_ptr<CLI::App> make_app(const std::string& tool, const std::string& purpose) {
   auto app = std::make_unique<CLI::App>(purpose, tool);
   app->set_version_flag("--version", tool + " " + version());
+  app->set_help_all_flag("--help-all", "Print this help and that of every subcommand, then exit");
   app->get_formatter()->column_width(34);
   app->option_defaults()->always_capture_default();
   return app;

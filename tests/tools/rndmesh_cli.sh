@@ -26,6 +26,7 @@ case_help() {
   "$rndmesh" random --help | grep -q "1000" || fail "random --help lacks the T_max default"
   "$rndmesh" icosa --help | grep -q -- "--level" || fail "icosa --help lacks --level"
   "$rndmesh" --version | grep -Eq "^rndmesh [0-9]" || fail "--version"
+  "$rndmesh" --help-all | grep -q -- "--tmin" || fail "--help-all lacks the subcommands' options"
 }
 case_icosa() {
   "$rndmesh" icosa --level 4 -o cell.off -q || fail "icosa failed"
