@@ -10,7 +10,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio
 
-.PHONY: all deps configure test test-asan bench run install clean
+.PHONY: all deps configure test test-asan bench tables run install clean
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -43,6 +43,10 @@ test-asan: deps
 # Performance figures for the README's benchmark table (written to $(OUT)/bench/).
 bench: deps all
 	@scripts/bench.sh $(BUILD) $(OUT)/bench
+
+# Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
+tables: deps all
+	@scripts/thesis_tables.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
 
 # The demo pipeline of DESIGN.md with every tool that exists so far.
 run: deps all

@@ -45,7 +45,7 @@ double AnnealingParameters::temperature(int anneal) const {
 
 double pair_energy(double r, double sigma, double cutoff, double epsilon) {
   if (r >= cutoff) return 0;
-  return epsilon * (std::pow(sigma / r, 8) - std::pow(sigma / cutoff, 8));
+  return kLennardJonesPrefactor * epsilon * (std::pow(sigma / r, 8) - std::pow(sigma / cutoff, 8));
 }
 
 double total_energy_brute_force(const mesh::VertexMatrix& x, const AnnealingParameters& p) {
@@ -175,7 +175,7 @@ double total_energy(MobileCells& cells, const mesh::VertexMatrix& x, const PairL
     e += stencil_energy(cells, cells.cell_of_particle(id), x.row(i).data(), law);
     cells.restore(id, x(i, 0));
   }
-  return 0.5 * epsilon * e;
+  return 0.5 * kLennardJonesPrefactor * epsilon * e;
 }
 
 // Permutes the points of x (and the cells' copy) into cell order; ties keep their order.
@@ -259,7 +259,7 @@ AnnealingResult anneal_on_sphere(const AnnealingParameters& p, mesh::VertexMatri
           cells.restore(i, old[0]);
         }
         // Metropolis (Algorithm 3): accept when p < min(exp(-dE/T), 1).
-        const double delta = p.epsilon * (e_new - e_old);
+        const double delta = kLennardJonesPrefactor * p.epsilon * (e_new - e_old);
         if (delta <= 0 || threshold < std::exp(-delta * beta)) {
           x.row(i) << trial[0], trial[1], trial[2];
           cells.move(i, Eigen::Vector3d(trial[0], trial[1], trial[2]));

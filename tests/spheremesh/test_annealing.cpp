@@ -42,8 +42,8 @@ TEST_CASE("Temperature schedule follows A.2.2", "[annealing][thesis]") {
 }
 
 TEST_CASE("Pair energy is the shifted repulsive LJ-8", "[annealing]") {
-  CHECK(spheremesh::pair_energy(1.0, 1.0, 3.0, 1.0) == Approx(1 - std::pow(3.0, -8)));
-  CHECK(spheremesh::pair_energy(2.0, 1.0, 3.0, 2.0) == Approx(2 * (std::pow(0.5, 8) - std::pow(3.0, -8))));
+  CHECK(spheremesh::pair_energy(1.0, 1.0, 3.0, 1.0) == Approx(4 * (1 - std::pow(3.0, -8))));
+  CHECK(spheremesh::pair_energy(2.0, 1.0, 3.0, 2.0) == Approx(8 * (std::pow(0.5, 8) - std::pow(3.0, -8))));
   CHECK(spheremesh::pair_energy(3.0, 1.0, 3.0, 1.0) == 0);
   CHECK(spheremesh::pair_energy(2.999999, 1.0, 3.0, 1.0) > 0);
 }
