@@ -63,6 +63,8 @@ double total_energy_brute_force(const mesh::VertexMatrix& points, const Annealin
 mesh::VertexMatrix random_points_on_sphere(int n, double radius, std::uint64_t seed);
 
 // Runs the schedule from `start` (N by 3 on the sphere; random_points_on_sphere() when empty).
+// The returned points are renumbered (in cell order, for the cache): row i of the result is
+// not the point that started in row i.
 // O(N) per sweep through linked cells. A Markov chain is sequential, so this is one thread;
 // run independent meshes in parallel. progress(i, anneals) is called after each temperature.
 AnnealingResult anneal_on_sphere(const AnnealingParameters& p, mesh::VertexMatrix start = {},
