@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/random.hpp"
+#include "io/csv.hpp"
 #include "neighbours/mobile_cells.hpp"
 #include "neighbours/monte_carlo_verlet_list.hpp"
 
@@ -281,6 +282,24 @@ AnnealingResult anneal_on_sphere(const AnnealingParameters& p, mesh::VertexMatri
   result.energy = total_energy(cells, x, law, p.epsilon);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
+}
+
+std::vector<std::pair<std::string, std::string>> annealing_fields(const AnnealingParameters& p,
+                                                                  const AnnealingResult& r) {
+  auto num = [](double x) { return io::format_number(x); };
+  return {{"points", std::to_string(p.points)},
+          {"radius", num(p.radius)},
+          {"vertex_radius", num(p.vertex_radius())},
+          {"seed", std::to_string(p.seed)},
+          {"T_max", num(p.t_max)},
+          {"T_min", num(p.t_min)},
+          {"anneals", std::to_string(p.anneals)},
+          {"sweeps_per_anneal", std::to_string(p.sweeps_per_anneal)},
+          {"epsilon", num(p.epsilon)},
+          {"cutoff_sigma", num(p.cutoff_sigmas)},
+          {"step_sigma", num(p.step_sigmas)},
+          {"acceptance", num(static_cast<double>(r.accepted) / static_cast<double>(std::max(1LL, r.attempted)))},
+          {"final_energy_en", num(r.energy)}};
 }
 
 }  // namespace cmp::spheremesh

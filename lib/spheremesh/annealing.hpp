@@ -3,6 +3,8 @@
 #include "mesh/tri_mesh.hpp"
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace cmp::spheremesh {
@@ -69,5 +71,10 @@ mesh::VertexMatrix random_points_on_sphere(int n, double radius, std::uint64_t s
 // run independent meshes in parallel. progress(i, anneals) is called after each temperature.
 AnnealingResult anneal_on_sphere(const AnnealingParameters& p, mesh::VertexMatrix start = {},
                                  const std::function<void(int, int)>& progress = {});
+
+// The parameters and outcome of a run as (key, value) pairs, for the "# key=value" lines of
+// the files it produces (energies in units of epsilon's energy unit: "_en").
+std::vector<std::pair<std::string, std::string>> annealing_fields(const AnnealingParameters& p,
+                                                                  const AnnealingResult& r);
 
 }  // namespace cmp::spheremesh

@@ -6,6 +6,7 @@
 #include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
+#include "core/parallel_for.hpp"
 #include "io/atomic_output.hpp"
 #include "io/csv.hpp"
 #include "io/off.hpp"
@@ -85,40 +86,25 @@ void run_random(const Options& o, const std::string& provenance) {
   const long n = static_cast<long>(seeds.size());
   cli::ProgressBar bar("annealing", static_cast<double>(n) * o.annealing.anneals, o.common.quiet);
   std::atomic<long> anneals_done{0};
-  std::vector<std::exception_ptr> errors(n);
   std::vector<std::string> summaries(n);
-#pragma omp parallel for schedule(dynamic)
-  for (long k = 0; k < n; ++k) {
-    try {
-      auto p = o.annealing;
-      p.seed = seeds[k];
-      const std::string seed = std::to_string(p.seed);
-      const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int, int) {
-        const long done = ++anneals_done;
-        if (omp_get_thread_num() == 0) bar.update(static_cast<double>(done));
-      });
-      const mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
-      Options single = o;
-      single.output = cli::expand_pattern(o.output, "seed", seed);
-      summaries[k] = write_mesh(
-          single, provenance, m,
-          {"method=random", "points=" + std::to_string(p.points), "radius=" + io::format_number(p.radius),
-           "vertex_radius=" + io::format_number(p.vertex_radius()), "seed=" + seed,
-           "T_max=" + io::format_number(p.t_max), "T_min=" + io::format_number(p.t_min),
-           "anneals=" + std::to_string(p.anneals), "sweeps_per_anneal=" + std::to_string(p.sweeps_per_anneal),
-           "epsilon=" + io::format_number(p.epsilon), "cutoff_sigma=" + io::format_number(p.cutoff_sigmas),
-           "step_sigma=" + io::format_number(p.step_sigmas),
-           "acceptance=" + io::format_number(static_cast<double>(annealed.accepted) / std::max(1LL, annealed.attempted)),
-           "final_energy_en=" + io::format_number(annealed.energy)});
-      summaries[k] += fmt::format(", Monte Carlo {:.2f} s ({:.3g} trial moves/s)", annealed.seconds,
-                                  annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0.0);
-      if (!o.trace.empty()) write_trace(cli::expand_pattern(o.trace, "seed", seed), provenance, annealed);
-    } catch (...) {
-      errors[k] = std::current_exception();
-    }
-  }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  parallel_for_each_job(n, [&](long k) {
+    auto p = o.annealing;
+    p.seed = seeds[k];
+    const std::string seed = std::to_string(p.seed);
+    const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int, int) {
+      const long done = ++anneals_done;
+      if (omp_get_thread_num() == 0) bar.update(static_cast<double>(done));
+    });
+    const mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
+    Options single = o;
+    single.output = cli::expand_pattern(o.output, "seed", seed);
+    std::vector<std::string> comments{"method=random"};
+    for (const auto& [key, value] : spheremesh::annealing_fields(p, annealed)) comments.push_back(key + "=" + value);
+    summaries[k] = write_mesh(single, provenance, m, comments);
+    summaries[k] += fmt::format(", Monte Carlo {:.2f} s ({:.3g} trial moves/s)", annealed.seconds,
+                                annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0.0);
+    if (!o.trace.empty()) write_trace(cli::expand_pattern(o.trace, "seed", seed), provenance, annealed);
+  });
   if (!o.common.quiet)
     for (const auto& line : summaries) std::cerr << "rndmesh: " << line << "\n";
 }
@@ -128,19 +114,11 @@ void run_stats(const Options& o, const std::string& provenance) {
   // in that order is the error reported, and nothing is written.
   const long n = static_cast<long>(o.inputs.size());
   std::vector<spheremesh::SphereMeshReport> reports(n);
-  std::vector<std::exception_ptr> errors(n);
-#pragma omp parallel for schedule(dynamic)
-  for (long i = 0; i < n; ++i) {
-    try {
-      const auto off = io::read_off(o.inputs[i]);
-      if (off.F.rows() == 0) throw InputError(o.inputs[i], 0, "the mesh has no triangles");
-      reports[i] = spheremesh::sphere_mesh_report(off.V, off.F);
-    } catch (...) {
-      errors[i] = std::current_exception();
-    }
-  }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  parallel_for_each_job(n, [&](long i) {
+    const auto off = io::read_off(o.inputs[i]);
+    if (off.F.rows() == 0) throw InputError(o.inputs[i], 0, "the mesh has no triangles");
+    reports[i] = spheremesh::sphere_mesh_report(off.V, off.F);
+  });
   io::AtomicOutput out(o.output);
   io::CsvWriter csv(out.stream());
   csv.meta("provenance", provenance);
