@@ -7,23 +7,14 @@ bin="$build/bin"
 mkdir -p "$out"
 step() { printf '\n== %s\n' "$*" >&2; }
 
-step "rndmesh: icosahedral sphere mesh, level 4 (642 vertices)"
-"$bin/rndmesh" icosa --level 4 -o "$out/icosa4.off"
-step "rndmesh: 642 annealed random points + spherical Delaunay (thesis schedule)"
-"$bin/rndmesh" random -n 642 --seed 7 --trace "$out/anneal.csv" -o "$out/cell.off"
-step "rndmesh: quality metrics of both meshes"
-"$bin/rndmesh" stats "$out/icosa4.off" "$out/cell.off" -o "$out/mesh_stats.csv"
-grep -v '^#' "$out/mesh_stats.csv" | awk -F, 'NR == 1 { printf "%-22s %8s %6s %7s %7s %7s %12s\n", $1, $2, $3, $8, $9, $10, $19; next }
-  { printf "%-22s %8d %6d %7.3f %7.3f %7.3f %12.2e\n", $1, $2, $3, $8, $9, $10, $19 }' >&2
-step "gnuplot: the annealing trace"
-gnuplot -e "in='$out/anneal.csv'; out='$out/anneal.png'" scripts/plot_anneal.gp
+# Each tool's stage is scripts/demo_<tool>.sh, run in pipeline order; later stages read the
+# files of earlier ones. Each appends a description of its outputs to $out/README.txt.
+printf 'Outputs of make run:\n' >"$out/README.txt"
+for tool in rndmesh shellpack percolate lbflow kcfit jam2d; do
+  script="scripts/demo_$tool.sh"
+  if [ -f "$script" ]; then source "$script"; fi
+done
 
-cat >&2 <<EOT
-
-Outputs in $out/:
-  icosa4.off      icosahedral mesh (MeshLab, ParaView)
-  cell.off        Monte Carlo mesh, N = 642 (MeshLab, ParaView)
-  anneal.csv      temperature, acceptance and energy per anneal
-  anneal.png      the same as a figure (gnuplot, scripts/plot_anneal.gp)
-  mesh_stats.csv  quality metrics of both meshes, one row each
-EOT
+printf '\n' >&2
+cat "$out/README.txt" >&2
+printf '(all in %s/; this list is %s/README.txt)\n' "$out" "$out" >&2
