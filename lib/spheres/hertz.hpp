@@ -1,0 +1,34 @@
+#pragma once
+// The Hertz contact law between elastic spheres (thesis B.60, 5.5.1 L819; digest 0.1):
+//   F = (4/3) E* sqrt(R*) h^(3/2),   U = (8/15) E* sqrt(R*) h^(5/2),
+// h = R_i + R_j - |x_i - x_j| the overlap, 1/R* = 1/R_i + 1/R_j, and for two spheres of one
+// material 1/E* = 2 (1 - nu^2) / E. The force pushes the spheres apart (the printed minus sign
+// would pull them together; digest 0.1).
+#include <cmath>
+
+namespace cmp::spheres {
+
+struct HertzMaterial {
+  double youngs_modulus = 1.0;  // E (thesis Ch. 5: 1)
+  double poisson_ratio = 0.5;   // nu (thesis Ch. 5: 0.5)
+
+  // E* = E / (2 (1 - nu^2)): 2/3 for the thesis's E = 1, nu = 0.5.
+  double effective_modulus() const { return youngs_modulus / (2 * (1 - poisson_ratio * poisson_ratio)); }
+  // Throws cmp::UsageError unless E > 0 and -1 < nu < 1.
+  void validate() const;
+};
+
+// R* = R_i R_j / (R_i + R_j).
+inline double effective_radius(double r_i, double r_j) { return r_i * r_j / (r_i + r_j); }
+
+// (4/3) E* sqrt(R*): the force is this times h^(3/2).
+inline double hertz_prefactor(const HertzMaterial& m, double r_i, double r_j) {
+  return 4.0 / 3.0 * m.effective_modulus() * std::sqrt(effective_radius(r_i, r_j));
+}
+
+// Magnitude of the repulsive force at overlap h (0 for h <= 0).
+inline double hertz_force(double prefactor, double h) { return h > 0 ? prefactor * h * std::sqrt(h) : 0.0; }
+// Elastic energy at overlap h (0 for h <= 0): (2/5) F h.
+inline double hertz_energy(double prefactor, double h) { return h > 0 ? 0.4 * prefactor * h * h * std::sqrt(h) : 0.0; }
+
+}  // namespace cmp::spheres

@@ -1,0 +1,78 @@
+#pragma once
+// Jammed packings of monodisperse Hertzian spheres by the thesis's protocol (5.5.1,
+// L813-821; digest 3(a-7)): random centres in a periodic cube at volume fraction 0.01, then
+// radii scaled by (1 + eps_r) or (1 - eps_r), each change followed by FIRE, inflating while
+// P < P_min and deflating while P > 2 P_min, with eps_r halved at every reversal, until
+// P_min < P < 2 P_min. A packing with rattlers is rejected and the whole procedure restarts
+// from new random centres. So, by default, is a packing that is not isostatic (3N - 2
+// contacts in a periodic box): small boxes crystallise now and then (N = 16: about one
+// packing in ten orders at phi = 0.692 with 56 contacts), which the thesis's Fig. S5.1
+// (Z = 6 - 4/N) and Fig. S5.2 do not count as random jammed packings.
+#include "minimise/fire.hpp"
+#include "spheres/hertz.hpp"
+#include "spheres/sphere_packing.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace cmp::spheres {
+
+struct JammingParameters {
+  double initial_volume_fraction = 0.01;  // psi_0
+  double initial_step = 0.01;             // eps_r
+  double min_pressure = 1e-8;             // P_min, in units of E
+  HertzMaterial material;                 // E = 1, nu = 0.5
+  minimise::FireParameters fire;          // the thesis's FIRE; tolerance below
+  int max_tries = 1000;                   // packings started before giving up
+  long max_size_changes = 20000;          // per try
+  bool reject_rattlers = true;
+  bool require_isostatic = true;          // reject packings without exactly 3N - 2 contacts
+  JammingParameters() { fire.force_tolerance = 1e-15; }  // the thesis's max|f_i| <= 1e-15
+  // Throws cmp::UsageError naming the first bad value.
+  void validate() const;
+};
+
+// Why a try was not accepted.
+enum class TryOutcome { Accepted, Rattlers, NotIsostatic, NoPressureWindow, FireCap };
+std::string try_outcome_name(TryOutcome outcome);
+
+struct JammingResult {
+  SpherePacking packing;    // centres wrapped into [0, L)^3, equal radii
+  double pressure = 0;      // in units of E
+  double energy = 0;
+  double max_force = 0;     // max |f_i| at the end
+  int contacts = 0;         // touching pairs
+  int rattlers = 0;         // 0 unless reject_rattlers is off
+  long fire_iterations = 0; // over every try
+  long size_changes = 0;    // of the accepted try
+  int rejected_tries = 0;   // tries thrown away, for any reason
+  int rejected_for_rattlers = 0;
+  int rejected_not_isostatic = 0;
+  double seconds = 0;       // wall time
+  double contact_number() const { return packing.size() ? 2.0 * contacts / packing.size() : 0.0; }
+};
+
+// The side of the cube: chosen so that the diameter is about 1 at jamming (L^3 = N pi / (6 *
+// 0.64)); the result does not depend on it (Hertz pressure is scale-free in units of E).
+double jamming_box_side(int n);
+
+// Smallest N accepted: below it a sphere at jamming is wider than half the box and would touch
+// two images of another, and the minimum image convention (and the thesis's model) breaks.
+inline constexpr int kMinJammingSpheres = 10;
+
+// Called after every size change: (try number from 0, size changes, volume fraction,
+// pressure); return false to give up (throws cmp::ComputationError("interrupted")).
+using JammingProgress = std::function<bool(int attempt, long size_changes, double volume_fraction, double pressure)>;
+
+// Contacts of an isostatic rattler-free packing of n spheres in a periodic box: d(n - 1) + 1.
+inline int isostatic_contacts(int n) { return 3 * n - 2; }
+
+// One accepted jammed packing of n spheres. Try k draws its centres from Random(seed, k), so
+// the result depends on (n, seed, parameters) only, never on threads or timing. Throws
+// cmp::UsageError for n < kMinJammingSpheres or bad parameters, cmp::ComputationError when
+// max_tries tries all fail.
+JammingResult jam_spheres(int n, std::uint64_t seed, const JammingParameters& parameters,
+                          const JammingProgress& progress = {});
+
+}  // namespace cmp::spheres

@@ -1,0 +1,100 @@
+#include "spheres/structure.hpp"
+
+#include "core/errors.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "spheres/hertz_spheres.hpp"
+#include "spheres/rattlers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+namespace cmp::spheres {
+
+RadialDistribution radial_distribution(const std::vector<SpherePacking>& packings, double bin_width, double r_max) {
+  if (!(bin_width > 0)) throw UsageError("g(r) bin width must be positive");
+  if (!(r_max > bin_width)) throw UsageError("g(r) range must exceed one bin");
+  for (const auto& p : packings) r_max = std::min(r_max, p.box.minCoeff() / 2 / p.mean_diameter());
+  const int bins = static_cast<int>(std::floor(r_max / bin_width + 1e-9));
+  if (bins < 1) throw UsageError("the box is too small for one g(r) bin of this width");
+  RadialDistribution rdf;
+  rdf.bin_width = bin_width;
+  rdf.r.resize(static_cast<std::size_t>(bins));
+  rdf.g.assign(static_cast<std::size_t>(bins), 0.0);
+  rdf.pair_counts.assign(static_cast<std::size_t>(bins), 0);
+  for (int b = 0; b < bins; ++b) rdf.r[b] = (b + 0.5) * bin_width;
+  for (const auto& p : packings) {
+    const int n = p.size();
+    if (n < 2) continue;
+    const double d = p.mean_diameter(), reach = bins * bin_width * d;
+    neighbours::Box box;
+    box.lengths = p.box;
+    box.periodic = {true, true, true};
+    neighbours::CellGrid grid(box, std::min(reach, p.box.minCoeff() / 2));
+    grid.build(p.positions);
+    std::vector<long> counts(static_cast<std::size_t>(bins), 0);
+    grid.for_each_pair(p.positions, [&](int, int, const Eigen::Vector3d&, double r2) {
+      const int b = static_cast<int>(std::sqrt(r2) / d / bin_width);
+      if (b < bins) ++counts[b];
+    });
+    const double pairs = 0.5 * n * (n - 1.0), volume = p.box_volume() / (d * d * d);
+    for (int b = 0; b < bins; ++b) {
+      const double r0 = b * bin_width, r1 = r0 + bin_width;
+      const double shell = 4.0 / 3.0 * std::numbers::pi * (r1 * r1 * r1 - r0 * r0 * r0);
+      rdf.g[b] += counts[b] / (pairs * shell / volume) / static_cast<double>(packings.size());
+      rdf.pair_counts[b] += counts[b];
+    }
+  }
+  return rdf;
+}
+
+ContactStatistics contact_statistics(const SpherePacking& packing, const HertzMaterial& material) {
+  ContactStatistics s;
+  s.spheres = packing.size();
+  s.volume_fraction = packing.volume_fraction();
+  if (s.spheres == 0) return s;
+  HertzSpheres system(packing.box, packing.radii, material, 0.0);
+  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(packing.positions.data(), 3L * s.spheres);
+  const auto state = system.evaluate(x);
+  const double d = packing.mean_diameter();
+  s.contacts = static_cast<int>(state.contacts.size());
+  s.contact_number = 2.0 * s.contacts / s.spheres;
+  s.pressure = state.pressure;
+  const auto rattler = find_rattlers(s.spheres, state.contacts);
+  s.rattlers = static_cast<int>(std::count(rattler.begin(), rattler.end(), true));
+  int load_bearing_contacts = 0;
+  for (const auto& c : state.contacts) {
+    s.forces.push_back(c.force / (material.youngs_modulus * d * d));
+    s.max_overlap = std::max(s.max_overlap, c.overlap / d);
+    load_bearing_contacts += !rattler[c.i] && !rattler[c.j];
+  }
+  if (s.rattlers < s.spheres) s.contact_number_without_rattlers = 2.0 * load_bearing_contacts / (s.spheres - s.rattlers);
+  if (!s.forces.empty()) {
+    s.mean_force = std::accumulate(s.forces.begin(), s.forces.end(), 0.0) / s.forces.size();
+    double var = 0;
+    for (double f : s.forces) var += (f - s.mean_force) * (f - s.mean_force);
+    s.force_cv = std::sqrt(var / s.forces.size()) / s.mean_force;
+  }
+  return s;
+}
+
+Histogram normalised_histogram(const std::vector<double>& values, int bins, double max_ratio) {
+  Histogram h;
+  if (bins < 1 || !(max_ratio > 0)) throw UsageError("histogram needs bins >= 1 and a positive range");
+  h.centres.resize(static_cast<std::size_t>(bins));
+  h.density.assign(static_cast<std::size_t>(bins), 0.0);
+  const double width = max_ratio / bins;
+  for (int b = 0; b < bins; ++b) h.centres[b] = (b + 0.5) * width;
+  if (values.empty()) return h;
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+  if (!(mean > 0)) return h;
+  for (double v : values) {
+    const int b = static_cast<int>(v / mean / width);
+    if (b >= 0 && b < bins) h.density[b] += 1.0 / (values.size() * width);
+  }
+  return h;
+}
+
+}  // namespace cmp::spheres
+
