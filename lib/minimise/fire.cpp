@@ -35,8 +35,11 @@ std::string fire_stop_name(FireStop stop) {
 
 double max_block_norm(const Eigen::VectorXd& f, int block_size) {
   double worst = 0;
-  for (Eigen::Index i = 0; i + block_size <= f.size(); i += block_size)
-    worst = std::max(worst, f.segment(i, block_size).squaredNorm());
+  for (Eigen::Index i = 0; i + block_size <= f.size(); i += block_size) {
+    const double n2 = f.segment(i, block_size).squaredNorm();
+    if (std::isnan(n2)) return n2;  // a NaN force must never pass for converged
+    worst = std::max(worst, n2);
+  }
   return std::sqrt(worst);
 }
 

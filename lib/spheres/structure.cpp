@@ -12,12 +12,53 @@
 
 namespace cmp::spheres {
 
+namespace {
+
+// Unordered pairs of p per bin of width bin_width * d up to bins * bin_width * d, counting
+// every periodic image when that reach exceeds half the box (small packings).
+std::vector<long> pair_histogram(const SpherePacking& p, double bin_width, int bins) {
+  const int n = p.size();
+  const double d = p.mean_diameter(), reach = bins * bin_width * d;
+  std::vector<long> counts(static_cast<std::size_t>(bins), 0);
+  auto add = [&](double r) {
+    const int b = static_cast<int>(r / d / bin_width);
+    if (b < bins) ++counts[b];
+  };
+  neighbours::Box box;
+  box.lengths = p.box;
+  box.periodic = {true, true, true};
+  if (reach <= p.box.minCoeff() / 2) {
+    neighbours::CellGrid grid(box, reach);
+    grid.build(p.positions);
+    grid.for_each_pair(p.positions, [&](int, int, const Eigen::Vector3d&, double r2) { add(std::sqrt(r2)); });
+    return counts;
+  }
+  // Every image within reach: ordered pairs (i, j, shift) except i = j unshifted, halved.
+  Eigen::Vector3i images;
+  for (int a = 0; a < 3; ++a) images[a] = static_cast<int>(std::ceil(reach / p.box[a])) + 1;
+  std::vector<long> ordered(static_cast<std::size_t>(bins), 0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector3d d0 = box.minimum_image(p.positions.row(i).transpose() - p.positions.row(j).transpose());
+      for (int sx = -images[0]; sx <= images[0]; ++sx)
+        for (int sy = -images[1]; sy <= images[1]; ++sy)
+          for (int sz = -images[2]; sz <= images[2]; ++sz) {
+            if (i == j && sx == 0 && sy == 0 && sz == 0) continue;
+            const double r = (d0 + Eigen::Vector3d(sx * p.box[0], sy * p.box[1], sz * p.box[2])).norm();
+            const int b = static_cast<int>(r / d / bin_width);
+            if (b < bins) ++ordered[b];
+          }
+    }
+  for (int b = 0; b < bins; ++b) counts[b] = ordered[b] / 2;
+  return counts;
+}
+
+}  // namespace
+
 RadialDistribution radial_distribution(const std::vector<SpherePacking>& packings, double bin_width, double r_max) {
   if (!(bin_width > 0)) throw UsageError("g(r) bin width must be positive");
   if (!(r_max > bin_width)) throw UsageError("g(r) range must exceed one bin");
-  for (const auto& p : packings) r_max = std::min(r_max, p.box.minCoeff() / 2 / p.mean_diameter());
   const int bins = static_cast<int>(std::floor(r_max / bin_width + 1e-9));
-  if (bins < 1) throw UsageError("the box is too small for one g(r) bin of this width");
   RadialDistribution rdf;
   rdf.bin_width = bin_width;
   rdf.r.resize(static_cast<std::size_t>(bins));
@@ -27,17 +68,8 @@ RadialDistribution radial_distribution(const std::vector<SpherePacking>& packing
   for (const auto& p : packings) {
     const int n = p.size();
     if (n < 2) continue;
-    const double d = p.mean_diameter(), reach = bins * bin_width * d;
-    neighbours::Box box;
-    box.lengths = p.box;
-    box.periodic = {true, true, true};
-    neighbours::CellGrid grid(box, std::min(reach, p.box.minCoeff() / 2));
-    grid.build(p.positions);
-    std::vector<long> counts(static_cast<std::size_t>(bins), 0);
-    grid.for_each_pair(p.positions, [&](int, int, const Eigen::Vector3d&, double r2) {
-      const int b = static_cast<int>(std::sqrt(r2) / d / bin_width);
-      if (b < bins) ++counts[b];
-    });
+    const auto counts = pair_histogram(p, bin_width, bins);
+    const double d = p.mean_diameter();
     const double pairs = 0.5 * n * (n - 1.0), volume = p.box_volume() / (d * d * d);
     for (int b = 0; b < bins; ++b) {
       const double r0 = b * bin_width, r1 = r0 + bin_width;

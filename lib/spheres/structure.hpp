@@ -16,10 +16,11 @@ struct RadialDistribution {
 };
 
 // g(r) of centres over one or several packings (pooled), r in units of each packing's mean
-// diameter, up to r_max (in diameters; capped at half the shortest box side), periodic
-// minimum image. Normalised per packing to the ideal gas of the same density:
-// g = pairs / (N (N - 1) / 2 * shell volume / V), averaged over packings. O(N) per packing by
-// linked cells. Throws cmp::UsageError for bin_width <= 0 or r_max <= bin_width.
+// diameter, up to r_max (in diameters). Normalised per packing to the ideal gas of the same
+// density, g = pairs / (N (N - 1) / 2 * shell volume / V), averaged over packings. Up to half
+// the box: O(N) per packing by linked cells. Beyond (small boxes, e.g. N = 50 where L/2 is
+// 1.5 diameters) every periodic image is counted, O(N^2 (r_max / L)^3), and own images add
+// about 1/N to g. Throws cmp::UsageError for bin_width <= 0 or r_max <= bin_width.
 RadialDistribution radial_distribution(const std::vector<SpherePacking>& packings, double bin_width = 0.01,
                                        double r_max = 3.0);
 

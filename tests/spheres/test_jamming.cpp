@@ -1,0 +1,87 @@
+#include "spheres/jamming.hpp"
+
+#include "core/errors.hpp"
+#include "io/xyz.hpp"
+#include "io/xyz_frame.hpp"
+#include "spheres/structure.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <omp.h>
+
+#include <numeric>
+
+using namespace cmp::spheres;
+
+namespace {
+// Jams `count` packings of n spheres (seeds 1..count) and checks each as the thesis's Fig. S5.1
+// demands; returns the volume fractions.
+std::vector<double> jam_and_check(int n, int count) {
+  const JammingParameters p;
+  std::vector<double> phi;
+  for (int seed = 1; seed <= count; ++seed) {
+    const auto r = jam_spheres(n, static_cast<std::uint64_t>(seed), p);
+    INFO("N = " << n << ", seed " << seed);
+    CHECK(r.contacts == 3 * n - 2);                       // isostatic
+    CHECK(r.contact_number() == Approx(6.0 - 4.0 / n));  // Z = 6 - 4/N
+    CHECK(r.rattlers == 0);
+    CHECK(r.pressure > p.min_pressure);
+    CHECK(r.pressure < 2 * p.min_pressure);
+    CHECK(r.max_force <= 1e-15);  // the thesis's tolerance, reached
+    // The same, measured afresh on the packing as written and read back.
+    const auto back = frame_to_packing(packing_to_frame(r.packing));
+    const auto s = contact_statistics(back);
+    CHECK(s.contacts == 3 * n - 2);
+    CHECK(s.rattlers == 0);
+    phi.push_back(r.packing.volume_fraction());
+  }
+  return phi;
+}
+double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
+}  // namespace
+
+TEST_CASE("Jammed packings are isostatic and rattler-free, N = 16, 32, 50; phi_J grows with N") {
+  const auto phi16 = jam_and_check(16, 24);
+  const auto phi32 = jam_and_check(32, 12);
+  const auto phi50 = jam_and_check(50, 8);
+  // Fig. S5.2 loosely (100 packings per N are in the README, make jamming-figure): thesis
+  // 0.606, 0.615, 0.620 approaching 0.639. Our 100-packing means are 0.584, 0.629, 0.627
+  // (README); a handful of seeds scatters by about 0.01/sqrt(count).
+  CHECK(mean(phi16) == Approx(0.59).margin(0.02));
+  CHECK(mean(phi32) == Approx(0.625).margin(0.02));
+  CHECK(mean(phi50) == Approx(0.625).margin(0.015));
+  CHECK(mean(phi16) < mean(phi50));
+  for (double p : phi50) CHECK(p < 0.66);
+}
+
+TEST_CASE("Jamming: same seed, same packing, whatever the thread count; another seed, another packing") {
+  const JammingParameters p;
+  const auto a = jam_spheres(20, 5, p);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto b = jam_spheres(20, 5, p);
+  omp_set_num_threads(threads);
+  CHECK(a.packing.positions == b.packing.positions);
+  CHECK(a.packing.radii == b.packing.radii);
+  CHECK(a.fire_iterations == b.fire_iterations);
+  const auto c = jam_spheres(20, 6, p);
+  CHECK(c.packing.positions != a.packing.positions);
+}
+
+TEST_CASE("Jamming: the isostaticity filter matters (small boxes crystallise), and bad requests are refused") {
+  // N = 16 orders into hyperstatic crystallites now and then: with the filter off some
+  // accepted packings carry more than 3N - 2 contacts; with it on none do (test above).
+  JammingParameters p;
+  p.require_isostatic = false;
+  int hyperstatic = 0;
+  for (int seed = 1; seed <= 40 && hyperstatic == 0; ++seed) hyperstatic += jam_spheres(16, seed, p).contacts > 46;
+  CHECK(hyperstatic > 0);
+  CHECK_THROWS_AS(jam_spheres(9, 1, JammingParameters{}), cmp::UsageError);
+  p = {};
+  p.min_pressure = -1;
+  CHECK_THROWS_AS(jam_spheres(16, 1, p), cmp::UsageError);
+  p = {};
+  p.max_tries = 1;
+  p.fire.max_iterations = 5;  // every try hits the FIRE cap
+  CHECK_THROWS_AS(jam_spheres(16, 1, p), cmp::ComputationError);
+}
