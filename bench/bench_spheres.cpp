@@ -1,8 +1,10 @@
 // Benchmarks of the soft-sphere machinery (make bench, scripts/bench_shellpack.sh):
 //   bench_spheres jam N SEEDS [TOL]      time per jammed packing, FIRE iterations per second
-//   bench_spheres fire N PHI TOL SEED    one FIRE minimisation from random centres at volume
-//                                        fraction PHI (the LAMMPS comparison), positions written
-//                                        to stdout as "x y z" lines when DUMP is set
+//   bench_spheres fire N PHI TOL SEED [DATA [TABLE]]
+//                                        one FIRE minimisation from random centres at volume
+//                                        fraction PHI (the LAMMPS comparison); with DATA, the
+//                                        start is also written as a LAMMPS data file, and with
+//                                        TABLE the Hertz law as a LAMMPS pair_style table file
 #include "minimise/fire.hpp"
 #include "core/random.hpp"
 #include "spheres/hertz_spheres.hpp"
@@ -11,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -62,6 +65,25 @@ int main(int argc, char** argv) {
     Eigen::VectorXd x(3L * n);
     for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = side * random.uniform();
     spheres::HertzSpheres system(Eigen::Vector3d::Constant(side), Eigen::VectorXd::Constant(n, radius), {});
+    if (argc > 6) {  // the same start for LAMMPS
+      std::FILE* f = std::fopen(argv[6], "w");
+      fmt::print(f, "LAMMPS data file: bench_spheres fire {} {} seed {}\n\n{} atoms\n1 atom types\n\n", n, phi, seed, n);
+      for (const char* axis : {"x", "y", "z"}) fmt::print(f, "0 {:.17g} {}lo {}hi\n", side, axis, axis);
+      fmt::print(f, "\nMasses\n\n1 1\n\nAtoms # atomic\n\n");
+      for (int i = 0; i < n; ++i) fmt::print(f, "{} 1 {:.17g} {:.17g} {:.17g}\n", i + 1, x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+      std::fclose(f);
+    }
+    if (argc > 7) {  // Hertz energy and force on a fine table, r from 1e-4 d to d
+      std::FILE* f = std::fopen(argv[7], "w");
+      const int points = 100000;
+      const double d = 2 * radius, c = spheres::hertz_prefactor({}, radius, radius);
+      fmt::print(f, "# Hertz, E = 1, nu = 0.5, d = {:.17g}\n\nHERTZ\nN {} R {:.17g} {:.17g}\n\n", d, points, 1e-4 * d, d);
+      for (int k = 0; k < points; ++k) {
+        const double r = 1e-4 * d + (d - 1e-4 * d) * k / (points - 1), h = d - r;
+        fmt::print(f, "{} {:.17g} {:.17g} {:.17g}\n", k + 1, r, spheres::hertz_energy(c, h), spheres::hertz_force(c, h));
+      }
+      std::fclose(f);
+    }
     minimise::FireParameters p;
     p.force_tolerance = tol;
     p.max_iterations = 10'000'000;
@@ -73,6 +95,6 @@ int main(int argc, char** argv) {
                r.iterations, s, r.iterations * double(n) / s, state.energy, r.max_force);
     return 0;
   }
-  fmt::print(stderr, "usage: bench_spheres jam N SEEDS [TOL] | fire N PHI TOL SEED\n");
+  fmt::print(stderr, "usage: bench_spheres jam N SEEDS [TOL [any]] | fire N PHI TOL SEED [DATA [TABLE]]\n");
   return 2;
 }

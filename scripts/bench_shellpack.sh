@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# make bench, shellpack: time per jammed packing (the thesis's full protocol) and one FIRE
+# minimisation side by side with LAMMPS (Debian `lammps`: min_style fire, Hertz through
+# pair_style table, the same start and the same per-particle force tolerance). Sourced by
+# scripts/bench.sh ($bench, $out, $machine, $stamp). LAMMPS is installed from Debian when
+# missing unless BENCH_INSTALL_REFERENCES=0.
+echo "== shellpack jam: time per jammed packing (thesis protocol, tolerance 1e-15), one core" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "stage,N,packings,tolerance,seconds_per_packing,seconds,fire_iterations,particle_iterations_per_s,iterations_per_s,phi_J_mean,rejected_per_packing"
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 16 20
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 50 10
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 256 2
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 1024 1
+} | tee "$out/shellpack_jam.csv" >&2
+
+if ! command -v lmp >/dev/null && [ "${BENCH_INSTALL_REFERENCES:-1}" = 1 ]; then
+  echo "== installing the reference: Debian lammps" >&2
+  if [ "$(id -u)" -eq 0 ]; then SUDO=; else SUDO=sudo; fi
+  $SUDO apt-get install -y -qq --no-install-recommends lammps >&2 || echo "could not install lammps" >&2
+fi
+echo "== shellpack FIRE vs LAMMPS FIRE: Hertzian spheres at phi = 0.66 from random centres, max|f_i| <= 1e-12, one core" >&2
+work=$(mktemp -d)
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "# lammps=$(command -v lmp >/dev/null && lmp -h 2>/dev/null | grep -m1 -o 'LAMMPS ([^)]*)' || echo absent)"
+  echo "N,phi,tolerance,ours_iterations,ours_seconds,ours_particle_iterations_per_s,lammps_iterations,lammps_seconds,lammps_particle_iterations_per_s,speedup_time,speedup_per_iteration"
+  for n in 50 256 1024; do
+    ours=$(OMP_NUM_THREADS=1 "$bench/bench_spheres" fire $n 0.66 1e-12 1 "$work/start.data" "$work/hertz.table")
+    it=$(cut -d, -f6 <<<"$ours"); s=$(cut -d, -f7 <<<"$ours")
+    if command -v lmp >/dev/null; then
+      cat >"$work/in.fire" <<LMP
+units lj
+atom_style atomic
+boundary p p p
+read_data $work/start.data
+pair_style table linear 100000
+pair_coeff 1 1 $work/hertz.table HERTZ
+neighbor 0.2 bin
+neigh_modify every 1 delay 0 check yes
+timestep 0.1
+min_style fire
+min_modify norm max
+minimize 0 1e-12 10000000 10000000
+LMP
+      (cd "$work" && OMP_NUM_THREADS=1 lmp -in in.fire -screen none -log log.lammps >/dev/null)
+      lit=$(awk '/Iterations, force evaluations/ { print $(NF-1) }' "$work/log.lammps")
+      ls=$(awk '/^Loop time of/ { print $4 }' "$work/log.lammps")
+    else
+      lit=NaN; ls=NaN
+    fi
+    awk -v n=$n -v it="$it" -v s="$s" -v lit="$lit" -v ls="$ls" 'BEGIN {
+      printf "%d,0.66,1e-12,%d,%.4f,%.4g,%s,%s,%.4g,%.2f,%.2f\n", n, it, s, n * it / s, lit, ls,
+             (ls > 0 ? n * lit / ls : 0), (ls > 0 ? ls / s : 0), (ls > 0 ? (n * it / s) / (n * lit / ls) : 0) }'
+  done
+} | tee "$out/shellpack_fire_lammps.csv" >&2
+rm -rf "$work"

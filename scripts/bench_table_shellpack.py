@@ -1,0 +1,15 @@
+"""Rows of the README benchmark table for shellpack (scripts/bench_shellpack.sh)."""
+
+SECTIONS = {
+    "shellpack_jam.csv": lambda r: (
+        "shellpack jam: one jammed packing, thesis protocol, max|f| 1e-15, 1 core", f"N = {r['N']}",
+        f"{float(r['seconds_per_packing']):.3g} s per packing ({float(r['rejected_per_packing']):.1f} rejected tries each), "
+        f"{float(r['particle_iterations_per_s']) / 1e6:.1f} M particle-iterations/s",
+        "(thesis code: not reported)"),
+    "shellpack_fire_lammps.csv": lambda r: (
+        "FIRE, Hertzian spheres at phi = 0.66 to max|f_i| 1e-12, 1 core", f"N = {r['N']}",
+        f"{float(r['ours_seconds']):.3f} s, {r['ours_iterations']} iterations, "
+        f"{float(r['ours_particle_iterations_per_s']) / 1e6:.1f} M particle-it/s",
+        f"LAMMPS in the same run: {float(r['lammps_seconds']):.3f} s, {r['lammps_iterations']} iterations, "
+        f"{float(r['lammps_particle_iterations_per_s']) / 1e6:.1f} M particle-it/s; ours {float(r['speedup_time']):.1f}x faster"),
+}
