@@ -79,6 +79,8 @@ int run(const Options& o, const std::string& provenance) {
   const bool binary = std::all_of(y.begin(), y.end(), [](double v) { return v == 0 || v == 1; });
   fo.loss = o.loss == "auto" ? (model.probability && binary ? fit::Loss::MaxLikelihood : fit::Loss::Linear)
                              : fit::parse_loss(o.loss);
+  if (fo.loss == fit::Loss::MaxLikelihood && !model.probability)
+    throw UsageError(fmt::format("--loss ml is for 0/1 outcomes and the sigmoid model, not {}", model.name));
   if (fo.loss == fit::Loss::MaxLikelihood)
     for (std::size_t i = 0; i < y.size(); ++i)
       if (y[i] != 0 && y[i] != 1)
