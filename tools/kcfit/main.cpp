@@ -59,8 +59,8 @@ void list_models() {
 }
 
 std::string pm(const fit::FitResult& r, std::size_t k) {
-  return r.fixed[k] ? fmt::format("{} = {:.6g} (fixed)", r.names[k], r.value[k])
-                    : fmt::format("{} = {:.6g} ± {:.2g}", r.names[k], r.value[k], r.error[k]);
+  return r.fixed[k] ? fmt::format("{} = {:.4g} (fixed)", r.names[k], r.value[k])
+                    : fmt::format("{} = {:.4g} ± {:.2g}", r.names[k], r.value[k], r.error[k]);
 }
 
 int run(const Options& o, const std::string& provenance) {
