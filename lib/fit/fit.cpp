@@ -29,6 +29,7 @@ Loss parse_loss(const std::string& name) {
 }
 
 double residual(const Model& model, Loss loss, double x, double y, const double* p) {
+  if (loss == Loss::Log && model.log_value) return model.log_value(x, p) - std::log(y);
   const double f = model.value(x, p);
   switch (loss) {
     case Loss::Log: return f > 0 ? std::log(f) - std::log(y) : std::numeric_limits<double>::quiet_NaN();

@@ -57,11 +57,27 @@ struct Transform {
 // (ln of a non-positive value): the trust region rejects such steps and shrinks.
 constexpr double kHuge = 1e100;
 
+// The model in the loss's space: f, or ln f for the log loss; and its gradient.
+double model_term(const Model& m, Loss loss, double x, const double* p) {
+  if (loss != Loss::Log) return m.value(x, p);
+  if (m.log_value) return m.log_value(x, p);
+  const double f = m.value(x, p);
+  return f > 0 ? std::log(f) : std::numeric_limits<double>::quiet_NaN();
+}
+void model_term_gradient(const Model& m, Loss loss, double x, const double* p, double* g) {
+  if (loss == Loss::Log && m.log_gradient) return m.log_gradient(x, p, g);
+  m.gradient(x, p, g);
+  if (loss != Loss::Log) return;
+  const double f = m.value(x, p);
+  for (std::size_t k = 0; k < m.params.size(); ++k) g[k] /= f;
+}
+
 struct Context {
   const Problem* problem;
   std::vector<Transform> transforms;  // per free parameter
   std::vector<double> p;              // scratch: all parameters
   std::vector<double> grad;           // scratch: gradient in all parameters
+  std::vector<double> target;         // y, or ln y for the log loss
 
   void set(const gsl_vector* u) {
     for (std::size_t k = 0; k < transforms.size(); ++k)
@@ -75,7 +91,7 @@ int residuals(const gsl_vector* u, void* data, gsl_vector* r) {
   const auto& pr = *c.problem;
   const double huge = kHuge / std::sqrt(static_cast<double>(pr.x.size()));
   for (std::size_t i = 0; i < pr.x.size(); ++i) {
-    const double ri = residual(*pr.model, pr.loss, pr.x[i], pr.y[i], c.p.data());
+    const double ri = model_term(*pr.model, pr.loss, pr.x[i], c.p.data()) - c.target[i];
     gsl_vector_set(r, i, std::isfinite(ri) ? ri : huge);
   }
   return GSL_SUCCESS;
@@ -86,10 +102,9 @@ int jacobian(const gsl_vector* u, void* data, gsl_matrix* J) {
   c.set(u);
   const auto& pr = *c.problem;
   for (std::size_t i = 0; i < pr.x.size(); ++i) {
-    pr.model->gradient(pr.x[i], c.p.data(), c.grad.data());
-    const double scale = pr.loss == Loss::Log ? 1.0 / pr.model->value(pr.x[i], c.p.data()) : 1.0;
+    model_term_gradient(*pr.model, pr.loss, pr.x[i], c.p.data(), c.grad.data());
     for (std::size_t k = 0; k < c.transforms.size(); ++k) {
-      const double g = c.grad[pr.free[k]] * scale * c.transforms[k].dp(gsl_vector_get(u, k));
+      const double g = c.grad[pr.free[k]] * c.transforms[k].dp(gsl_vector_get(u, k));
       gsl_matrix_set(J, i, k, std::isfinite(g) ? g : 0.0);
     }
   }
@@ -106,7 +121,9 @@ struct Attempt {
 
 Attempt run_from(const Problem& pr, const std::vector<double>& start) {
   const std::size_t n = pr.x.size(), k = pr.free.size();
-  Context c{&pr, {}, start, std::vector<double>(start.size())};
+  Context c{&pr, {}, start, std::vector<double>(start.size()), pr.y};
+  if (pr.loss == Loss::Log)
+    for (double& t : c.target) t = std::log(t);
   for (int idx : pr.free) c.transforms.push_back({pr.lower[idx], pr.upper[idx]});
 
   gsl_multifit_nlinear_fdf fdf{};
@@ -127,7 +144,7 @@ Attempt run_from(const Problem& pr, const std::vector<double>& start) {
   // Tight tolerances (fits are tiny): stop on a relative step below 1e-14 or a vanishing
   // gradient; a step that cannot lower the cost any more (GSL_ENOPROG) after progress was
   // made means the minimum is reached to machine precision.
-  constexpr double xtol = 1e-14, gtol = 1e-15;
+  constexpr double xtol = 1e-11, gtol = 1e-12;
   int info = 0;
   for (int iter = 1; status == GSL_SUCCESS && iter <= pr.max_iterations; ++iter) {
     a.iterations = iter;
@@ -217,9 +234,8 @@ Solution solve_least_squares(const Problem& pr) {
   Eigen::MatrixXd J(n, k);
   std::vector<double> grad(s.p.size());
   for (long i = 0; i < n; ++i) {
-    pr.model->gradient(pr.x[i], s.p.data(), grad.data());
-    const double scale = pr.loss == Loss::Log ? 1.0 / pr.model->value(pr.x[i], s.p.data()) : 1.0;
-    for (int j = 0; j < k; ++j) J(i, j) = grad[pr.free[j]] * scale;
+    model_term_gradient(*pr.model, pr.loss, pr.x[i], s.p.data(), grad.data());
+    for (int j = 0; j < k; ++j) J(i, j) = grad[pr.free[j]];
   }
   const double factor = n > k ? best.cost / static_cast<double>(n - k) : std::numeric_limits<double>::infinity();
   s.covariance = scaled_covariance(J, pr.free, static_cast<int>(s.p.size()), factor);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cmp::fit {
 
@@ -52,6 +53,20 @@ void shifted_power_gradient(double x, const double* p, double exponent, double h
   if (has_exponent) g[2] = p[0] * base * std::log(d);
 }
 
+// ln of C (x - phi_c)^a h(x) with ln h given, and its gradient in (C, phi_c[, a]).
+double log_shifted_power(double x, const double* p, double exponent, double log_h) {
+  const double d = x - p[1];
+  if (!(p[0] > 0) || !(d > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::log(p[0]) + exponent * std::log(d) + log_h;
+}
+void log_shifted_power_gradient(double x, const double* p, double exponent, double* g, bool has_exponent) {
+  const double d = x - p[1];
+  g[0] = 1 / p[0];
+  g[1] = -exponent / d;
+  if (has_exponent) g[2] = std::log(d);
+}
+double log_rh2(double x) { return 2 * (std::log(x) - std::log1p(-x)); }
+
 std::vector<Model> make_models() {
   std::vector<Model> m;
   const Parameter C{"C", "prefactor", 1.0, 0.0, kInf};
@@ -85,6 +100,10 @@ std::vector<Model> make_models() {
     k.gradient = [](double x, const double* p, double* g) {
       shifted_power_gradient(x, p, p[2] + 0.76, rh2(x), g, true);
     };
+    k.log_value = [](double x, const double* p) { return log_shifted_power(x, p, p[2] + 0.76, log_rh2(x)); };
+    k.log_gradient = [](double x, const double* p, double* g) {
+      log_shifted_power_gradient(x, p, p[2] + 0.76, g, true);
+    };
     k.x_in_domain = in_unit_interval;
     k.domain = "0 < x < 1, x > phi_c";
     k.threshold = 1;
@@ -103,6 +122,10 @@ std::vector<Model> make_models() {
     k.value = [](double x, const double* p) { return shifted_power(x, p, kFixedKcExponent, rh2(x)); };
     k.gradient = [](double x, const double* p, double* g) {
       shifted_power_gradient(x, p, kFixedKcExponent, rh2(x), g, false);
+    };
+    k.log_value = [](double x, const double* p) { return log_shifted_power(x, p, kFixedKcExponent, log_rh2(x)); };
+    k.log_gradient = [](double x, const double* p, double* g) {
+      log_shifted_power_gradient(x, p, kFixedKcExponent, g, false);
     };
     k.x_in_domain = in_unit_interval;
     k.domain = "0 < x < 1, x > phi_c";
@@ -125,6 +148,8 @@ std::vector<Model> make_models() {
     k.params = {C, phi_c, {"e", "exponent", 2.0}};
     k.value = [](double x, const double* p) { return shifted_power(x, p, p[2], 1.0); };
     k.gradient = [](double x, const double* p, double* g) { shifted_power_gradient(x, p, p[2], 1.0, g, true); };
+    k.log_value = [](double x, const double* p) { return log_shifted_power(x, p, p[2], 0.0); };
+    k.log_gradient = [](double x, const double* p, double* g) { log_shifted_power_gradient(x, p, p[2], g, true); };
     k.x_in_domain = [](double) { return true; };
     k.domain = "x > phi_c";
     k.threshold = 1;
@@ -160,6 +185,8 @@ std::vector<Model> make_models() {
     k.params = {C, phi_c, e};
     k.value = [](double x, const double* p) { return shifted_power(x, p, p[2], 1.0); };
     k.gradient = [](double x, const double* p, double* g) { shifted_power_gradient(x, p, p[2], 1.0, g, true); };
+    k.log_value = [](double x, const double* p) { return log_shifted_power(x, p, p[2], 0.0); };
+    k.log_gradient = [](double x, const double* p, double* g) { log_shifted_power_gradient(x, p, p[2], g, true); };
     k.x_in_domain = [](double) { return true; };
     k.domain = "x > phi_c";
     k.threshold = 1;

@@ -32,6 +32,10 @@ struct Model {
   std::function<double(double x, const double* p)> value;
   // grad[k] = d f / d p_k at (x, p).
   std::function<void(double x, const double* p, double* grad)> gradient;
+  // Optional: ln f and its gradient in closed form (one logarithm instead of a power and a
+  // logarithm: the log loss's hot path). ln f is NaN where f <= 0.
+  std::function<double(double x, const double* p)> log_value;
+  std::function<void(double x, const double* p, double* grad)> log_gradient;
   // Domain of x that does not depend on the parameters (e.g. 0 < phi < 1); points outside
   // it are dropped (and counted) before fitting.
   std::function<bool(double x)> x_in_domain;
