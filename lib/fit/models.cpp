@@ -65,7 +65,7 @@ void log_shifted_power_gradient(double x, const double* p, double exponent, doub
   g[1] = -exponent / d;
   if (has_exponent) g[2] = std::log(d);
 }
-double log_rh2(double x) { return 2 * (std::log(x) - std::log1p(-x)); }
+double log_rh2(double x) { return 2 * std::log(x / (1 - x)); }
 
 std::vector<Model> make_models() {
   std::vector<Model> m;
