@@ -40,6 +40,11 @@ BootstrapResult bootstrap(const Model& model, const std::vector<double>& x, cons
     throw ComputationError(fmt::format("bootstrap: only {} of {} replicas could be fitted", ok.size(), replicas));
   const double m = static_cast<double>(ok.size());
   for (std::size_t k = 0; k < np; ++k) {
+    if (best.fixed[k]) {  // held: no spread (and no round-off in the mean)
+      for (auto* v : {&b.mean, &b.q025, &b.q975}) v->push_back(best.value[k]);
+      b.stddev.push_back(0.0);
+      continue;
+    }
     std::vector<double> col;
     for (const auto& v : ok) col.push_back(v[k]);
     double mean = 0;
