@@ -156,7 +156,7 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
   r.fixed = fixed;
   r.covariance = sol.covariance;
   r.error.resize(np);
-  for (int k = 0; k < np; ++k) r.error[k] = fixed[k] ? 0.0 : std::sqrt(std::max(0.0, r.covariance(k, k)));
+  for (int k = 0; k < np; ++k) r.error[k] = fixed[k] ? 0.0 : std::sqrt(r.covariance(k, k));  // NaN if not >= 0
   r.n = n;
   r.free_parameters = nfree;
   r.iterations = sol.iterations;

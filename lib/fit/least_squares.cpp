@@ -237,8 +237,13 @@ Solution solve_least_squares(const Problem& pr) {
     model_term_gradient(*pr.model, pr.loss, pr.x[i], s.p.data(), grad.data());
     for (int j = 0; j < k; ++j) J(i, j) = grad[pr.free[j]];
   }
-  const double factor = n > k ? best.cost / static_cast<double>(n - k) : std::numeric_limits<double>::infinity();
-  s.covariance = scaled_covariance(J, pr.free, static_cast<int>(s.p.size()), factor);
+  if (n > k) {
+    s.covariance = scaled_covariance(J, pr.free, static_cast<int>(s.p.size()), best.cost / static_cast<double>(n - k));
+  } else {  // no residual variance to scale by: undefined, inf as curve_fit reports it
+    s.covariance = Eigen::MatrixXd::Zero(static_cast<long>(s.p.size()), static_cast<long>(s.p.size()));
+    for (int a : pr.free)
+      for (int b : pr.free) s.covariance(a, b) = std::numeric_limits<double>::infinity();
+  }
   return s;
 }
 

@@ -253,3 +253,14 @@ TEST_CASE("bootstrap: same result on 1 and 2 threads, spread close to the analyt
   const auto other = fit::bootstrap(m, d.x, d.y, {}, best, 400, 12);
   CHECK(other.mean != one.mean);
 }
+
+TEST_CASE("as many points as free parameters: exact fit, errors undefined (inf) as in curve_fit", "[fit]") {
+  fit::FitOptions o;
+  o.fixed = {{"e", 1.0}};
+  const auto r = fit::fit(fit::find_model("power"), {0.2, 0.3}, {1, 2}, o);
+  CHECK(r.value[0] == Approx(10).epsilon(1e-9));
+  CHECK(r.value[1] == Approx(0.1).epsilon(1e-9));
+  CHECK(std::isinf(r.error[0]));
+  CHECK(std::isinf(r.error[1]));
+  CHECK(r.error[2] == 0);
+}
