@@ -53,7 +53,7 @@ const std::vector<Case> kCases = {
 
 }  // namespace
 
-TEST_CASE("synthetic data of every model: parameters within the reported errors, both losses", "[fit]") {
+TEST_CASE("synthetic data of every model recover the parameters within the reported errors for both losses", "[fit]") {
   // Over 40 noise realisations the truth lies within 1 sigma about 68 % of the time and
   // within 4 sigma always: the errors are neither too small nor much too large.
   for (const auto& c : kCases) {
@@ -82,7 +82,7 @@ TEST_CASE("synthetic data of every model: parameters within the reported errors,
   }
 }
 
-TEST_CASE("digest 6(c): kc-percolation with log-normal noise recovers phi_c = 0.146, gamma = 0.83", "[fit]") {
+TEST_CASE("digest 6(c) kc-percolation with log-normal noise recovers phi_c 0.146 and gamma 0.83", "[fit]") {
   const auto& m = fit::find_model("kc-percolation");
   const auto d = synthetic(m, {50, 0.146, 0.83}, 0.16, 0.45, 120, 0.15, true, 7);
   fit::FitOptions o;
@@ -95,7 +95,7 @@ TEST_CASE("digest 6(c): kc-percolation with log-normal noise recovers phi_c = 0.
   CHECK_FALSE(r.at_bound);
 }
 
-TEST_CASE("digest 6(c): threshold extrapolation returns (0.035, 3.67, 1.1)", "[fit]") {
+TEST_CASE("digest 6(c) threshold extrapolation returns 0.035 3.67 1.1", "[fit]") {
   const auto& m = fit::find_model("threshold");
   const std::vector<double> delta{0.03, 0.04, 0.05, 0.06, 0.07};
   SECTION("points exactly on the law") {
@@ -118,7 +118,7 @@ TEST_CASE("digest 6(c): threshold extrapolation returns (0.035, 3.67, 1.1)", "[f
   }
 }
 
-TEST_CASE("fixed parameters are held and dropped from the count; the tortuosity exponent can be freed", "[fit]") {
+TEST_CASE("fixed parameters are held and dropped from the count and the tortuosity exponent can be freed", "[fit]") {
   const auto& m = fit::find_model("power");
   const auto d = synthetic(m, {230, 0.115, 3.61}, 0.16, 0.45, 60, 0.1, true, 3);
   fit::FitOptions o;
@@ -146,7 +146,7 @@ TEST_CASE("fixed parameters are held and dropped from the count; the tortuosity 
   CHECK(free.rss < fixed.rss);
 }
 
-TEST_CASE("log loss drops non-positive y; AIC and R2 are computed in the loss's space", "[fit]") {
+TEST_CASE("log loss drops non-positive y and counts them", "[fit]") {
   const auto& m = fit::find_model("kc-classical");
   std::vector<double> x{0.2, 0.3, 0.4, 0.5}, y;
   for (double v : x) y.push_back(2 * v * v * v / ((1 - v) * (1 - v)));
@@ -186,7 +186,7 @@ TEST_CASE("maximum likelihood for 0/1 outcomes recovers the sigmoid", "[fit]") {
   CHECK(within1 <= 0.9 * total);
 }
 
-TEST_CASE("failures: too few points, empty domain, non-convergence, separation, bad names", "[fit]") {
+TEST_CASE("failures for too few points or empty domain or non-convergence or separation or bad names", "[fit]") {
   const auto& kc = fit::find_model("kc-percolation");
   auto message = [](auto&& f) {
     try {
@@ -230,7 +230,7 @@ TEST_CASE("failures: too few points, empty domain, non-convergence, separation, 
   CHECK_THROWS_AS(fit::fit(kc, d.x, d.y, ml), UsageError);
 }
 
-TEST_CASE("bootstrap: same result on 1 and 2 threads, spread close to the analytic error", "[fit]") {
+TEST_CASE("bootstrap gives the same result on 1 and 2 threads and a spread close to the analytic error", "[fit]") {
   const auto& m = fit::find_model("tortuosity");
   const auto d = synthetic(m, {0.74, 0.124, -0.38}, 0.14, 0.45, 100, 0.01, false, 9);
   const auto best = fit::fit(m, d.x, d.y, {});
@@ -254,7 +254,7 @@ TEST_CASE("bootstrap: same result on 1 and 2 threads, spread close to the analyt
   CHECK(other.mean != one.mean);
 }
 
-TEST_CASE("as many points as free parameters: exact fit, errors undefined (inf) as in curve_fit", "[fit]") {
+TEST_CASE("as many points as free parameters give an exact fit with infinite errors as in curve_fit", "[fit]") {
   fit::FitOptions o;
   o.fixed = {{"e", 1.0}};
   const auto r = fit::fit(fit::find_model("power"), {0.2, 0.3}, {1, 2}, o);
