@@ -7,8 +7,7 @@ import csv
 import subprocess
 import sys
 
-import numpy as np
-from scipy.optimize import curve_fit
+np = None  # numpy and scipy are imported by run(), so that --list works without them
 
 RTOL = 1e-6
 
@@ -136,6 +135,7 @@ CASES = {
 
 
 def scipy_fit(f, jac, x, y, p0, loss):
+    from scipy.optimize import curve_fit
     kw = dict(p0=p0, ftol=1e-14, xtol=1e-14, gtol=1e-14, maxfev=100000)
     if loss == "log":
         popt, pcov = curve_fit(lambda x, *p: np.log(f(x, *p)), x, np.log(y),
@@ -146,6 +146,9 @@ def scipy_fit(f, jac, x, y, p0, loss):
 
 
 def run(case, kcfit, work):
+    global np
+    import numpy
+    np = numpy
     kind, model, loss, extra, f, jac, p0, names = CASES[case]
     x, y = data(kind, 150, seed=sum(map(ord, case)))
     path = f"{work}/{case}.csv"

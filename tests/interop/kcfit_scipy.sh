@@ -7,7 +7,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 python=/usr/bin/python3  # the Debian interpreter, where python3-scipy lives
 if [[ ${1:-} == --list ]]; then
-  "$python" "$here/kcfit_scipy.py" --list 2>/dev/null || true
+  "$python" "$here/kcfit_scipy.py" --list
   exit 0
 fi
 case_name=${1:?usage: $0 --list | CASE}
