@@ -67,6 +67,10 @@ case_fix_and_free() {
   grep -q "^phi_c,0.141,0,1," fit.csv || fail "phi_c not fixed: $(cat fit.csv)"
   "$kcfit" "$flow" --model kc-percolation --fix phi_c=0.141,gamma=1 --loss log -q >fit.csv || fail "two fixes"
   grep -q "^gamma,1,0,1," fit.csv || fail "gamma not fixed"
+  # --fix takes one value: the input may follow it; repeated --fix accumulate.
+  "$kcfit" --fix phi_c=0.141 "$flow" --fix gamma=1 --model kc-percolation --loss log -q >fit2.csv || fail "--fix before input"
+  cmp -s <(grep -v '^# provenance' fit.csv) <(grep -v '^# provenance' fit2.csv) || fail "--fix order changes the fit"
+  grep -q "^gamma,1,0,1," fit.csv || fail "gamma not fixed"
   "$kcfit" "$flow" --model tortuosity --y tortuosity -q >tau.csv || fail "tortuosity"
   grep -q "^e,-0.38,0,1," tau.csv || fail "exponent not fixed at -0.38"
   near "$(value tau.csv phi_c)" 0.124 0.002 || fail "tortuosity phi_c $(value tau.csv phi_c)"

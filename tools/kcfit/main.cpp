@@ -181,8 +181,10 @@ int main(int argc, char** argv) {
     app->add_option("--loss", o.loss,
                     "linear: sum (f - y)^2; log: sum (ln f - ln y)^2; ml: maximum likelihood for 0/1 outcomes "
                     "(sigmoid); auto: ml for the sigmoid on 0/1 data, else linear");
-    app->add_option("--fix", o.fix, "hold parameters at values: name=value[,name=value] (repeatable)");
-    app->add_option("--free", o.free, "fit a parameter that is fixed by default (the tortuosity exponent e)");
+    app->add_option("--fix", o.fix, "hold parameters at values: name=value[,name=value] (repeatable)")
+        ->allow_extra_args(false);
+    app->add_option("--free", o.free, "fit a parameter that is fixed by default (the tortuosity exponent e)")
+        ->allow_extra_args(false);
     app->add_option("--max-iter", o.max_iterations, "solver iterations per starting point")->check(CLI::Range(1, 1000000));
     app->add_option("--plot", o.plot, "also draw data and fit into this PNG (gnuplot)");
     app->add_flag("--plot-kc", o.plot_kc, "add the classical Kozeny-Carman law C x^3/(1-x)^2, fitted too, to the plot");
