@@ -89,8 +89,9 @@ std::string render_plot(const std::string& path, const PlotSpec& spec) {
     gp << "set terminal " << terminal << " size 900,720" << (terminal == "pngcairo" ? " enhanced font ',12'" : "")
        << "\nset output " << quoted(png.string()) << "\nset xlabel " << quoted(spec.x_label) << " noenhanced"
        << "\nset ylabel " << quoted(spec.y_label) << " noenhanced" << "\nset title " << quoted(spec.title) << " noenhanced"
-       << "\nset key below left Left reverse noenhanced\nset grid\nset datafile missing 'NaN'\nset offsets 0, 0, graph 0.04, graph 0.04\n";
+       << "\nset key below left Left reverse noenhanced\nset grid\nset datafile missing 'NaN'\n";
     if (spec.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
+    else gp << "set offsets 0, 0, graph 0.04, graph 0.04\n";  // points on 0 and 1 stay visible
     gp << "plot " << quoted((work / "data.dat").string()) << " using 1:2 with points pt 7 ps 0.7 lc rgb '#1f77b4' title 'data'";
     const char* colours[] = {"#d62728", "#2ca02c", "#ff7f0e"};
     for (std::size_t c = 0; c < spec.curves.size(); ++c)
