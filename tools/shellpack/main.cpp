@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
     structure->add_option("packings", o.inputs, "extended XYZ packings (radius column, periodic Lattice); frames pooled")->required();
     structure->add_option("-o,--output", o.output, "g(r) CSV ('-': stdout)");
     structure->add_option("--bin", o.bin_width, "g(r) bin width [mean diameters]");
-    structure->add_option("--rmax", o.r_max, "g(r) range [mean diameters], at most half the box");
+    structure->add_option("--rmax", o.r_max, "g(r) range [mean diameters]; beyond half the box every periodic image counts");
     structure->add_option("--forces", o.forces_output, "write the contact force distribution P(f/<f>) to this CSV");
     structure->add_option("--force-bins", o.force_bins, "bins of the force distribution over [0, 4<f>)");
     structure->add_option("--summary", o.summary_output, "write one row per packing (Z, rattlers, pressure, force cv) to this CSV");
