@@ -8,11 +8,12 @@ echo "== shellpack jam: time per jammed packing (thesis protocol, tolerance 1e-1
 {
   echo "# machine=$machine"
   echo "# date=$stamp"
-  echo "stage,N,packings,tolerance,seconds_per_packing,seconds,fire_iterations,particle_iterations_per_s,iterations_per_s,phi_J_mean,rejected_per_packing"
+  echo "stage,N,packings,tolerance,accepted,seconds_per_packing,seconds,fire_iterations,particle_iterations_per_s,iterations_per_s,phi_J_mean,rejected_per_packing"
   OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 16 20
   OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 50 10
-  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 256 2
-  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 1024 1
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 50 10 1e-15 first
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 256 2 1e-15 first
+  OMP_NUM_THREADS=1 "$bench/bench_spheres" jam 1024 1 1e-15 first
 } | tee "$out/shellpack_jam.csv" >&2
 
 if ! command -v lmp >/dev/null && [ "${BENCH_INSTALL_REFERENCES:-1}" = 1 ]; then
