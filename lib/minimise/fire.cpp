@@ -48,14 +48,19 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   p.validate();
   if (x.size() % p.block_size != 0) throw UsageError("FIRE: state size is not a multiple of the block size");
   FireResult result;
-  Eigen::VectorXd f(x.size()), v = Eigen::VectorXd::Zero(x.size());
+  const Eigen::Index n = x.size();
+  Eigen::VectorXd f(n), v = Eigen::VectorXd::Zero(n);
   forces(x, f);
   result.force_evaluations = 1;
   double dt = p.dt, alpha = p.alpha_start;
   long last_cut = 0;
-  const double half_dt_over_m = 0.5 / p.mass;
+  const double inverse_mass = 1.0 / p.mass;
+  // The velocity update before each drift, v <- keep v + (mix + dt/2m) f: the FIRE mixing of
+  // the last step fused with the first half kick of this one (two passes over the state per
+  // iteration instead of eight). At the start v = 0, so keep is 0.
+  double keep = 0, mix = 0;
+  result.max_force = max_block_norm(f, p.block_size);
   for (long it = 0;; ++it) {
-    result.max_force = max_block_norm(f, p.block_size);
     result.iterations = it;
     if (!std::isfinite(result.max_force))
       throw ComputationError("FIRE: non-finite force after " + std::to_string(it) + " iterations");
@@ -65,23 +70,49 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       result.stop = FireStop::Interrupted;
       return result;
     }
-    // Velocity Verlet step.
-    v += (dt * half_dt_over_m) * f;
-    x += dt * v;
+    // Mixing (previous step) and half kick, then drift.
+    const double kick = 0.5 * dt * inverse_mass;
+    {
+      double* vp = v.data();
+      double* xp = x.data();
+      const double* fp = f.data();
+      const double cf = mix + kick;
+      for (Eigen::Index k = 0; k < n; ++k) {
+        vp[k] = keep * vp[k] + cf * fp[k];
+        xp[k] += dt * vp[k];
+      }
+    }
     forces(x, f);
     ++result.force_evaluations;
-    v += (dt * half_dt_over_m) * f;
-    // FIRE: mix the velocity towards the force, adapt dt and alpha.
-    const double power = v.dot(f);
-    const double v_norm = v.norm(), f_norm = f.norm();
-    if (f_norm > 0) v = (1 - alpha) * v + (alpha * v_norm / f_norm) * f;
+    // Second half kick, with the power P = v.F, |v|^2, |F|^2 and the largest |f_i| in one pass.
+    double power = 0, vv = 0, ff = 0, worst = 0;
+    {
+      double* vp = v.data();
+      const double* fp = f.data();
+      for (Eigen::Index k = 0; k < n; k += p.block_size) {
+        double block = 0;
+        for (int b = 0; b < p.block_size; ++b) {
+          const double fk = fp[k + b];
+          const double vk = vp[k + b] + kick * fk;
+          vp[k + b] = vk;
+          power += vk * fk, vv += vk * vk, block += fk * fk;
+        }
+        ff += block;
+        worst = std::max(worst, block);
+        if (std::isnan(block)) worst = block, k = n;  // reported above as a non-finite force
+      }
+    }
+    result.max_force = std::sqrt(worst);
+    // FIRE: turn v towards F (applied in the next pass), adapt dt and alpha.
+    keep = 1 - alpha;
+    mix = ff > 0 ? alpha * std::sqrt(vv / ff) : 0.0;
     if (power > 0) {
       if (it - last_cut > p.n_min) {
         dt = std::min(dt * p.f_inc, p.dt_max);
         alpha *= p.f_alpha;
       }
     } else {
-      v.setZero();
+      keep = mix = 0;  // restart from rest
       last_cut = it;
       dt *= p.f_dec;
       alpha = p.alpha_start;
