@@ -26,7 +26,7 @@ work=$(mktemp -d)
 {
   echo "# machine=$machine"
   echo "# date=$stamp"
-  echo "# lammps=$(command -v lmp >/dev/null && lmp -h 2>/dev/null | grep -m1 -o 'LAMMPS ([^)]*)' || echo absent)"
+  echo "# lammps=$(command -v lmp >/dev/null && lmp -h 2>/dev/null | grep -m1 -o 'Simulator - .*' | sed 's/Simulator - //' || echo absent)"
   echo "N,phi,tolerance,ours_iterations,ours_seconds,ours_particle_iterations_per_s,lammps_iterations,lammps_seconds,lammps_particle_iterations_per_s,speedup_time,speedup_per_iteration"
   for n in 50 256 1024; do
     ours=$(OMP_NUM_THREADS=1 "$bench/bench_spheres" fire $n 0.66 1e-12 1 "$work/start.data" "$work/hertz.table")
