@@ -99,7 +99,10 @@ void run_percolate(const Options& o, const std::string& provenance) {
                         [&](long i) { packings[i] = voxel::read_packing(o.inputs[i], {o.scale, o.d0}); });
   for (const auto& p : packings)
     for (std::size_t k = 0; k < deltas.size(); ++k)
-      voxel::make_grid(p.box, deltas[k] * p.d0, p.periodic);  // throws for delta larger than the box
+      if (deltas[k] * p.d0 > p.box.minCoeff())
+        throw UsageError(fmt::format("{}: --delta {} is larger than the box (smallest side {} = {:.4g} D0, D0 = {} from {})",
+                                     p.file, delta_names[k], p.box.minCoeff(), p.box.minCoeff() / p.d0,
+                                     io::format_number(p.d0), p.d0_source));
   io::AtomicOutput csv_out(o.csv);
   io::CsvWriter csv(csv_out.stream());
   csv.meta("provenance", provenance);
