@@ -37,7 +37,7 @@ struct Options {
   // sweep
   std::vector<std::string> tables;
   int bins = 10;
-  std::string porosity_column = "porosity_geometry";
+  std::string porosity_column = "porosity_geometry_overlap";
 };
 
 std::vector<double> parse_deltas(const std::string& text, std::vector<std::string>& names) {
@@ -229,7 +229,7 @@ int main(int argc, char** argv) {
                                                "from percolate's CSV rows (input of kcfit's sigmoid fit)");
     sweep->add_option("tables", o.tables, "CSV files written by percolate")->required();
     sweep->add_option("--bins", o.bins, "porosity bins per (N, delta) over the range of the data")->capture_default_str();
-    sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity_geometry or porosity_voxels")
+    sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity_geometry_overlap (spheres: lens-corrected; shells: = porosity_geometry), porosity_geometry (1 - sum V / V_box) or porosity_voxels")
         ->capture_default_str();
     sweep->add_option("-o,--output", o.csv, "output CSV ('-': stdout)")->capture_default_str();
 
