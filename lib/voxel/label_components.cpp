@@ -166,9 +166,10 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
         // start before them, never read), without a branch per voxel.
         Label cur = static_cast<Label>(base);
         unsigned previous = 0;
-        for (int x = 0; x < nx; ++x) {
+        for (int x = 0; x < nx; ++x) {  // masks, not ?: (which the compiler makes a branch)
           const unsigned v = m[x] != 0;
-          cur = (v & ~previous) ? static_cast<Label>(base + x) : cur;
+          const Label start = -static_cast<Label>(v & ~previous);  // all ones at a run start
+          cur = (static_cast<Label>(base + x) & start) | (cur & ~start);
           previous = v;
           row[x] = cur;
         }
@@ -295,9 +296,10 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
         for (int x = 0; x < nx; ++x) {  // branch-free: a run start rewrites its own number
           const unsigned v = m[x] != 0;
           const Label here = std::atomic_ref<Label>(row[x]).load(std::memory_order_relaxed);
-          cur = (v & ~previous) ? here : cur;
+          const Label start = -static_cast<Label>(v & ~previous);
+          cur = (here & start) | (cur & ~start);
           previous = v;
-          std::atomic_ref<Label>(row[x]).store(v ? cur : 0, std::memory_order_relaxed);
+          std::atomic_ref<Label>(row[x]).store(cur & -static_cast<Label>(v), std::memory_order_relaxed);
         }
       }
   }
