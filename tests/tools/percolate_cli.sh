@@ -132,6 +132,16 @@ case_sweep() {
   [ "$(grep -v '^#' prob.csv | sed -n 2p | cut -d, -f6-8)" = "2,0,0" ] || fail "low bin: $(cat prob.csv)"
   [ "$(grep -v '^#' prob.csv | sed -n 3p | cut -d, -f6-8)" = "2,2,1" ] || fail "high bin: $(cat prob.csv)"
 }
+case_sweep_script() {
+  # scripts/percolation_sweep.sh: the pipeline for shellpack's jammed packings, on the simple
+  # cubic array: probability 1 at high porosity, 0 once the channels close (r > a/sqrt 2).
+  cp "$sc" a.xyz
+  bash "$src/scripts/percolation_sweep.sh" -b "$bin/.." -d 0.05,0.1 -s "1.0 1.3 1.75 1.8" -n 2 -o res a.xyz \
+    2>/dev/null || fail "script"
+  [ "$(grep -vc '^#' res/percolate.csv)" = 9 ] || fail "rows: $(cat res/percolate.csv)"
+  [ "$(grep -v '^#' res/percolation_probability.csv | awk -F, 'NR > 1 { print $2, $8 }' | sort -u | tr '\n' ' ')" = \
+    "0.05 0 0.05 1 0.1 0 0.1 1 " ] || fail "probabilities: $(cat res/percolation_probability.csv)"
+}
 case_bad_off_without_box() {
   printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > nobox.off
   expect_error 2 "nobox.off:1: .*box" "$percolate" nobox.off --delta 0.1 -o out.vtk
