@@ -71,7 +71,7 @@ case_vtk_cluster() {
   "$percolate" "$sc" --delta 0.1 --scale 1.2 -o cluster.vtk -q > p.csv || fail "run"
   [ "$(field p.csv percolates)" = 1 ] || fail "r = 0.48 should percolate"
   head -10 cluster.vtk | grep -q "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"
-  head -2 cluster.vtk | grep -q "percolate .*delta=0.1 D0=1" || fail "title"
+  head -2 cluster.vtk | grep -q "^percolating cluster along x of .*delta=0.1 D0=1 (file) marking=spheres-overlap | percolate " || fail "title: $(head -2 cluster.vtk)"
   /usr/bin/python3 - "$(field p.csv cluster_voxels)" <<'PY' || fail "VTK contents"
 import sys, numpy as np
 raw = open("cluster.vtk", "rb").read()

@@ -143,8 +143,8 @@ void run_percolate(const Options& o, const std::string& provenance) {
         img.name = "cluster";
         img.data = std::move(cluster);
         io::write_vtk(vtk_names[i * deltas.size() + k], img,
-                      fmt::format("{} | {} delta={} D0={} ({}) marking={} percolating cluster along {}", provenance,
-                                  p.file, delta_names[k], io::format_number(p.d0), p.d0_source, a.marking, o.axis));
+                      fmt::format("percolating cluster along {} of {} delta={} D0={} ({}) marking={} | {}", o.axis,
+                                  p.file, delta_names[k], io::format_number(p.d0), p.d0_source, a.marking, provenance));
       }
       if (!o.common.quiet && !bar.enabled())
         std::cerr << fmt::format("percolate: {} delta={} ({}x{}x{}, D0={} from {}): porosity {:.4f} (voxels {:.4f}), "
