@@ -26,9 +26,10 @@ Connectivity connectivity_from_name(const std::string& name) {
 //  - every image row becomes a bit mask (64 voxels per word); runs of void voxels, and the
 //    places where a run touches a run of an earlier neighbour row, are found with word
 //    operations, so the branches are per union event, not per voxel;
-//  - the label array is the union-find forest: each voxel first holds the index of the first
-//    voxel of its run; a union links the larger root under the smaller, so every root is the
-//    first voxel (in memory order) of its component, whatever the order of the unions;
+//  - the label array is the union-find forest, whose nodes are the run starts (the other voxels
+//    of a run find their start from the bits); a union links the larger root under the
+//    smaller, so every root is the first voxel (in memory order) of its component, whatever
+//    the order of the unions;
 //  - z slabs are labelled in parallel, then joined (slab boundaries, periodic faces) by one
 //    thread, then numbered: roots get -(1, 2, ...) in memory order, every run start walks up
 //    to its root's number, the runs are filled, and a last pass flips the signs.
@@ -99,10 +100,12 @@ void row_bits(const std::uint8_t* m, int n, Word* bits) {
 inline Word shl1(const Word* a, int w) { return (a[w] << 1) | (w > 0 ? a[w - 1] >> 63 : 0); }
 inline Word shr1(const Word* a, int w, int words) { return (a[w] >> 1) | (w + 1 < words ? a[w + 1] << 63 : 0); }
 
+inline int run_start(const Word* b, int x);
+
 // Unions between a row and one earlier neighbour row: at every voxel x where the pair
 // (x, x + dx) is void in (row, neighbour) and the pair (x-1, x-1+dx) is not (which would join
 // the same two runs). Returns the number of successful unions.
-long unite_rows(const Forest& f, const Word* cur, const Word* nbr, int words, const Label* L, const Label* nL,
+long unite_rows(const Forest& f, const Word* cur, const Word* nbr, int words, Label base, Label nbase,
                 bool diagonal_x) {
   long merged = 0;
   for (int dx = diagonal_x ? -1 : 0; dx <= (diagonal_x ? 1 : 0); ++dx) {
@@ -115,7 +118,7 @@ long unite_rows(const Forest& f, const Word* cur, const Word* nbr, int words, co
       while (events) {
         const int x = 64 * w + std::countr_zero(events);
         events &= events - 1;
-        if (f.unite(L[x], nL[x + dx]) >= 0) ++merged;
+        if (f.unite(base + run_start(cur, x), nbase + run_start(nbr, x + dx)) >= 0) ++merged;
       }
     }
   }
@@ -124,6 +127,18 @@ long unite_rows(const Forest& f, const Word* cur, const Word* nbr, int words, co
 
 // Run starts of a row: void voxels whose left neighbour is not void.
 inline Word run_starts(const Word* b, int w) { return b[w] & ~shl1(b, w); }
+
+// Position of the first voxel of the run holding the void voxel x of a row of bits.
+inline int run_start(const Word* b, int x) {
+  int w = x >> 6;
+  const int bit = x & 63;
+  Word zeros = ~b[w] & (bit == 63 ? ~Word(0) : (Word(2) << bit) - 1);  // solid voxels at or before x
+  while (zeros == 0) {
+    if (w == 0) return 0;
+    zeros = ~b[--w];
+  }
+  return 64 * w + 64 - std::countl_zero(zeros);
+}
 
 }  // namespace
 
@@ -162,23 +177,19 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
         Label* row = L + base;
         Word* b = row_words(y, z);
         row_bits(m, nx, b);
-        // Every voxel gets the index of the first voxel of its run (solid voxels the last run
-        // start before them, never read), without a branch per voxel.
-        Label cur = static_cast<Label>(base);
-        unsigned previous = 0;
-        for (int x = 0; x < nx; ++x) {  // masks, not ?: (which the compiler makes a branch)
-          const unsigned v = m[x] != 0;
-          const Label start = -static_cast<Label>(v & ~previous);  // all ones at a run start
-          cur = (static_cast<Label>(base + x) & start) | (cur & ~start);
-          previous = v;
-          row[x] = cur;
-        }
-        for (int w = 0; w < words; ++w) runs += std::popcount(run_starts(b, w));
+        // Only run starts are nodes of the forest; the other voxels of a run find their start
+        // from the bits when needed (run_start).
+        for (int w = 0; w < words; ++w)
+          for (Word st = run_starts(b, w); st; st &= st - 1, ++runs) {
+            const int x = 64 * w + std::countr_zero(st);
+            row[x] = static_cast<Label>(base + x);
+          }
         for (const auto& r : rows) {
           const int yy = y + r.dy, zz = z + r.dz;
           if (yy < 0 || yy >= ny || zz < z_begin[t]) continue;
           const long nbase = (1L * zz * ny + yy) * nx;
-          merged += unite_rows(forest, b, row_words(yy, zz), words, row, L + nbase, r.diagonal_x);
+          merged += unite_rows(forest, b, row_words(yy, zz), words, static_cast<Label>(base),
+                               static_cast<Label>(nbase), r.diagonal_x);
         }
       }
     roots[t] = runs - merged;
@@ -203,7 +214,9 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
           if (!m[x]) continue;
           for (int dx = r.diagonal_x ? -1 : 0; dx <= (r.diagonal_x ? 1 : 0); ++dx) {
             const int xx = x + dx;
-            if (xx >= 0 && xx < nx && nm[xx]) unite_counted(L[base + x], L[nbase + xx]);
+            if (xx >= 0 && xx < nx && nm[xx])
+              unite_counted(static_cast<Label>(base + run_start(row_words(y, z), x)),
+                            static_cast<Label>(nbase + run_start(row_words(yy, zz), xx)));
           }
         }
       }
@@ -245,7 +258,9 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
           }
           if (!inside) continue;
           const long iq = q[0] + 1L * nx * (q[1] + 1L * ny * q[2]);
-          if (image[iq]) unite_counted(L[ip], L[iq]);
+          if (image[iq])
+            unite_counted(static_cast<Label>(ip - p[0] + run_start(row_words(p[1], p[2]), p[0])),
+                          static_cast<Label>(iq - q[0] + run_start(row_words(q[1], q[2]), q[0])));
         }
       }
   }

@@ -30,8 +30,9 @@ struct LabelOptions {
 // Returns count, the number of components. Components are numbered in the order of their
 // first voxel in memory order (x fastest), as scipy numbers them for an array indexed
 // [z, y, x]; so the result depends neither on the thread count nor on timing.
-// Cost: O(N) time, one pass over the image and four over the labels; memory: the labels
-// (4 bytes per voxel) and nothing else of size N. Uses all OpenMP threads (one z slab each).
+// Cost: O(N) time, one pass over the image, two over the labels and a few over the run
+// starts; memory: the labels (4 bytes per voxel) and one bit per voxel (the image's rows as
+// bit masks). Uses all OpenMP threads (one z slab each).
 // Throws std::invalid_argument for bad dims.
 int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::vector<std::int32_t>& labels,
                      const LabelOptions& options = {});
