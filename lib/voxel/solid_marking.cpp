@@ -105,7 +105,9 @@ void mark_shells(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const V
                           hi = a.cwiseMax(b).cwiseMax(c).array() + thickness;
     for_voxels(g, lo, hi, [&](int i, int j, int k, const Eigen::Vector3d& centre) {
       const std::size_t idx = g.index(i, j, k);
-      if (pore[idx] && triangle_box_overlap(a, b, c, centre, half)) set_solid(pore, idx);
+      if (std::atomic_ref<std::uint8_t>(pore[idx]).load(std::memory_order_relaxed) &&  // skip voxels already solid
+          triangle_box_overlap(a, b, c, centre, half))
+        set_solid(pore, idx);
     });
   }
 }
