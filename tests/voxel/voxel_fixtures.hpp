@@ -1,11 +1,10 @@
 #pragma once
-// Shared helpers of the voxel tests: random images, a plain flood-fill labelling to check
-// label_components against, and a partition comparison (numberings may differ).
+// Shared helpers of the voxel tests: random images and a plain flood-fill labelling to check
+// label_components against (numbered in the same memory order, so labels compare equal).
 #include "core/random.hpp"
 
 #include <array>
 #include <cstdint>
-#include <map>
 #include <vector>
 
 namespace cmp::voxel::fixtures {
@@ -63,23 +62,6 @@ inline int flood_fill_labels(const std::vector<std::uint8_t>& img, std::array<in
         }
       }
   return count;
-}
-
-// Same partition of the voxels (label 0 exactly where b is 0, and a one-to-one map between
-// the other labels)?
-template <class A, class B>
-bool same_partition(const std::vector<A>& a, const std::vector<B>& b) {
-  if (a.size() != b.size()) return false;
-  std::map<long, long> ab, ba;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if ((a[i] == 0) != (b[i] == 0)) return false;
-    if (a[i] == 0) continue;
-    auto [it, fresh] = ab.emplace(a[i], b[i]);
-    if (it->second != static_cast<long>(b[i])) return false;
-    auto [jt, fresh2] = ba.emplace(b[i], a[i]);
-    if (jt->second != static_cast<long>(a[i])) return false;
-  }
-  return true;
 }
 
 }  // namespace cmp::voxel::fixtures
