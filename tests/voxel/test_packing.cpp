@@ -43,7 +43,7 @@ TEST_CASE("read_packing: spheres from extended XYZ, scaled, D0 from the radii or
   CHECK_THROWS_WITH(read_packing(nolattice), Catch::Contains("Lattice"));
 }
 
-TEST_CASE("read_packing: shells from a packing OFF are unwrapped; no box is an error", "[voxel][packing]") {
+TEST_CASE("read_packing: shells from a packing OFF are unwrapped, and no box is an error", "[voxel][packing]") {
   // One octahedron of radius 0.5 centred on the corner of a periodic box of side 2: its
   // vertices wrapped into the box.
   std::string off = "OFF\n# box 2 2 2\n# periodic 1 1 1\n# shells 1 6\n6 8 0\n";
