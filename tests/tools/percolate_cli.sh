@@ -115,6 +115,14 @@ case_shell_triangles_vs_vertices() {
   /usr/bin/python3 -c "import sys,math; p=float(sys.argv[1]); assert 1-4*math.pi/3/27 < p < 1-0.99*4*math.pi/3/27, p" \
     "$(field tri.csv porosity_geometry)" || fail "porosity $(field tri.csv porosity_geometry)"
 }
+case_d0_from_off_comment() {
+  make_shell_packing
+  sed '1a # D0=2' packing.off > d0.off
+  "$percolate" d0.off --delta 0.05 -q > p.csv || fail "run"
+  [ "$(field p.csv d0)" = 2 ] || fail "d0 $(field p.csv d0)"
+  [ "$(field p.csv d0_source)" = file ] || fail "d0_source $(field p.csv d0_source)"
+  [ "$(field p.csv nx)" = 30 ] || fail "nx: 3 / (0.05 * 2) = 30, got $(field p.csv nx)"
+}
 case_periodic_labelling() {
   # A shell packing percolates around the shell; --periodic changes the labelling only.
   make_shell_packing
