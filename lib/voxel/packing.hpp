@@ -1,0 +1,57 @@
+#pragma once
+// A packing as percolate reads it: shells from a packing OFF (DESIGN.md: '# box', '# periodic',
+// '# shells') or spheres from an extended XYZ frame (Lattice, radius column), with the length
+// D_0 that delta is measured in.
+#include "mesh/tri_mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cmp::voxel {
+
+struct Packing {
+  enum class Kind { Shells, Spheres };
+  Kind kind = Kind::Shells;
+  std::string file;
+  Eigen::Vector3d box = Eigen::Vector3d::Ones();  // the box is [0, box) [length units]
+  std::array<bool, 3> periodic{true, true, true};
+  // Shells: vertices (each shell unwrapped into one periodic image), triangles, K+1 offsets.
+  mesh::VertexMatrix V;
+  mesh::FaceMatrix F;
+  std::vector<int> shell_offsets;
+  // Spheres: centres and radii (already multiplied by the scale factor).
+  mesh::VertexMatrix centres;
+  Eigen::VectorXd radii;
+  double scale = 1;  // radius scale factor applied
+  // The unit of delta [length units] and where it came from: "option" (--d0), "file" (a
+  // '# D0=' comment of the OFF, a D0= pair of the XYZ comment line), "shell_volume" (the
+  // diameter of the sphere of the mean shell volume: the initial diameter when shells keep
+  // their volume, as in the thesis), "mean_diameter" (mean unscaled sphere diameter).
+  double d0 = 1;
+  std::string d0_source;
+
+  int particles() const { return kind == Kind::Shells ? static_cast<int>(shell_offsets.size()) - 1 : static_cast<int>(centres.rows()); }
+};
+
+struct PackingReadOptions {
+  double scale = 1;  // spheres: radii are multiplied by it (> 0)
+  double d0 = 0;     // > 0: D_0 given by the user, overriding the file
+};
+
+// Reads path: an extended XYZ (name ending in .xyz or .extxyz; the last frame) or else a
+// packing OFF. Throws cmp::InputError(file, line, ...) for: an OFF without '# box' (line 1),
+// shell counts not adding up (from io::read_off), a triangle spanning two shells; an XYZ
+// without Lattice, with a non-orthorhombic lattice, without a radius column (radius:R:1) or
+// with a radius <= 0; and for everything io::read_off / io::XyzReader reject.
+Packing read_packing(const std::string& path, const PackingReadOptions& options = {});
+
+// Moves every vertex of each shell to the periodic image nearest to its neighbours along
+// the mesh edges (breadth first from the shell's first vertex), so that no triangle spans
+// the box. Needs edges shorter than half the box. Vertices in no triangle stay put.
+void unwrap_shells(mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::vector<int>& offsets,
+                   const Eigen::Vector3d& box, std::array<bool, 3> periodic);
+
+}  // namespace cmp::voxel

@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# percolate as a user runs it. `percolate_cli.sh --list` prints the cases; `percolate_cli.sh
+# CASE` runs one (ctest registers each). Needs CMP_BIN (the built programs) and CMP_SRC.
+set -uo pipefail
+bin=${CMP_BIN:-build/bin}
+src=${CMP_SRC:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
+percolate="$bin/percolate"
+rndmesh="$bin/rndmesh"
+sc="$src/data/percolate/simple_cubic_4x4x4.xyz"  # 4x4x4 spheres r = 0.4 on a = 1, D0 = 1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+# expect_error STATUS PATTERN cmd...: the command fails with STATUS, one line on stderr that
+# starts with "percolate: " and matches PATTERN, and leaves no output file (out.*) behind.
+expect_error() {
+  local want=$1 pattern=$2; shift 2
+  "$@" >stdout.txt 2>stderr.txt; local got=$?
+  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
+  [ "$(wc -l < stderr.txt)" -eq 1 ] || fail "$*: not one line on stderr: $(cat stderr.txt)"
+  grep -q "^percolate: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
+  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
+}
+# field CSV COLUMN [ROW]: the value of COLUMN in data row ROW (default 1) of a percolate CSV.
+field() {
+  grep -v '^#' "$1" | awk -F, -v col="$2" -v row="${3:-1}" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == col) c = i; next }
+    NR == row + 1 { print $c }'
+}
+# A packing OFF of one closed icosahedral shell (level 4, radius 1, edges ~0.19) centred in a
+# periodic box of side 3: packing.off.
+make_shell_packing() {
+  "$rndmesh" icosa --level 4 -o sphere.off -q || fail "rndmesh"
+  awk 'NR == 1 { print; print "# box 3 3 3"; print "# periodic 1 1 1"; print "# shells 1 642"; next }
+       /^#/ { next }
+       !counts { print; counts = 1; nv = $1; next }
+       nv > 0 { printf "%.17g %.17g %.17g\n", $1 + 1.5, $2 + 1.5, $3 + 1.5; --nv; next }
+       { print }' sphere.off > packing.off
+}
+
+case_help() {
+  "$percolate" --help | grep -q -- "--delta" || fail "help lacks --delta"
+  "$percolate" --help | grep -q -- "--periodic" || fail "help lacks --periodic"
+  "$percolate" sweep --help | grep -q -- "--bins" || fail "sweep help lacks --bins"
+  "$percolate" --version | grep -Eq "^percolate [0-9]" || fail "--version"
+}
+case_spheres_csv() {
+  "$percolate" "$sc" --delta 0.05 -q > p.csv || fail "run"
+  grep -q "^# provenance=percolate .*--delta 0.05" p.csv || fail "provenance: $(head -3 p.csv)"
+  [ "$(field p.csv kind)" = spheres ] || fail "kind"
+  [ "$(field p.csv nx)" = 80 ] || fail "nx $(field p.csv nx)"
+  [ "$(field p.csv d0_source)" = file ] || fail "d0_source"
+  [ "$(field p.csv marking)" = spheres-overlap ] || fail "marking"
+  /usr/bin/python3 -c "import math,sys; p=float(sys.argv[1]); e=1-4*math.pi*0.4**3/3; assert abs(p-e)<1e-12, (p,e)" \
+    "$(field p.csv porosity_geometry)" || fail "porosity_geometry"
+  [ "$(field p.csv percolates_x)$(field p.csv percolates_y)$(field p.csv percolates_z)" = 111 ] || fail "percolation"
+  [ "$(field p.csv clusters)" = 1 ] || fail "clusters"
+}
+case_scale_closes_the_channels() {
+  # The void of the simple cubic array percolates while r < a / sqrt 2 = 0.707; overlap marking
+  # keeps it open at least while r < a / sqrt 2 - sqrt 3 delta: r = 0.64 percolates at
+  # delta = 0.025, r = 0.72 never does.
+  "$percolate" "$sc" --delta 0.025 --scale 1.6 -q > open.csv || fail "open"
+  "$percolate" "$sc" --delta 0.025 --scale 1.8 -q > closed.csv || fail "closed"
+  [ "$(field open.csv percolates)" = 1 ] || fail "r = 0.64 should percolate"
+  [ "$(field closed.csv percolates)" = 0 ] || fail "r = 0.72 should not percolate"
+  [ "$(field closed.csv scale)" = 1.8 ] || fail "scale column"
+  [ "$(field closed.csv d0)" = 1 ] || fail "D0 from the file, not scaled"
+}
+case_vtk_cluster() {
+  "$percolate" "$sc" --delta 0.1 --scale 1.2 -o cluster.vtk -q > p.csv || fail "run"
+  [ "$(field p.csv percolates)" = 1 ] || fail "r = 0.48 should percolate"
+  head -10 cluster.vtk | grep -q "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"
+  head -2 cluster.vtk | grep -q "^percolating cluster along x of .*delta=0.1 D0=1 (file) marking=spheres-overlap | percolate " || fail "title: $(head -2 cluster.vtk)"
+  /usr/bin/python3 - "$(field p.csv cluster_voxels)" <<'PY' || fail "VTK contents"
+import sys, numpy as np
+raw = open("cluster.vtk", "rb").read()
+head, data = raw.split(b"LOOKUP_TABLE default\n", 1)
+assert b"DIMENSIONS 40 40 40" in head and b"SCALARS cluster unsigned_char" in head, head
+img = np.frombuffer(data[:40**3], dtype=np.uint8).reshape(40, 40, 40)
+assert set(np.unique(img)) <= {0, 1}
+assert img.sum() == int(sys.argv[1]), (img.sum(), sys.argv[1])
+assert img[:, :, 0].any() and img[:, :, -1].any()  # touches both x faces (x is the last index)
+PY
+}
+case_many_packings_and_deltas() {
+  cp "$sc" a.xyz; cp "$sc" b.xyz
+  "$percolate" a.xyz b.xyz --delta 0.1,0.2 -o 'c_{name}_{delta}.vtk' --threads 2 -q > p.csv || fail "run"
+  [ "$(grep -vc '^#' p.csv)" = 5 ] || fail "rows: $(cat p.csv)"
+  for f in c_a_0.1.vtk c_a_0.2.vtk c_b_0.1.vtk c_b_0.2.vtk; do [ -f $f ] || fail "$f missing"; done
+  [ "$(field p.csv delta 2)" = 0.2 ] || fail "order: a 0.1, a 0.2, b 0.1, b 0.2"
+  expect_error 2 "{name}" "$percolate" a.xyz b.xyz --delta 0.1 -o out.vtk
+}
+case_threads_same_output() {
+  strip() { grep -v '^#' "$1" | cut -d, -f1-33; }  # without the timing columns
+  "$percolate" "$sc" --delta 0.04 --scale 1.6 --threads 1 -o one.vtk -q > one.csv || fail "1 thread"
+  "$percolate" "$sc" --delta 0.04 --scale 1.6 --threads 2 -o two.vtk -q > two.csv || fail "2 threads"
+  cmp -s <(strip one.csv) <(strip two.csv) || fail "CSV differs: $(strip one.csv) vs $(strip two.csv)"
+  cmp -s <(tail -n +3 one.vtk) <(tail -n +3 two.vtk) || fail "VTK differs"  # all but the version line and title
+}
+case_shell_triangles_vs_vertices() {
+  # The thesis's caveat: vertex marking leaks at delta below the edge length; triangles do not.
+  make_shell_packing
+  "$percolate" packing.off --delta 0.05 --d0 1 -q > tri.csv || fail "triangles"
+  "$percolate" packing.off --delta 0.05 --d0 1 --marking vertices -q > vert.csv || fail "vertices"
+  [ "$(field tri.csv clusters)" = 2 ] || fail "triangles: $(field tri.csv clusters) clusters, expected inside + outside"
+  [ "$(field vert.csv clusters)" = 1 ] || fail "vertices: $(field vert.csv clusters) clusters, expected a leak"
+  [ "$(field tri.csv marking)" = triangles ] || fail "marking column"
+  [ "$(field tri.csv d0_source)" = option ] || fail "d0_source"
+  "$percolate" packing.off --delta 0.05 --marking vertices --thickness 0.05 -q > thick.csv || fail "thickness"
+  [ "$(field thick.csv clusters)" = 2 ] || fail "thickened vertices should close the shell"
+  [ "$(field thick.csv d0_source)" = shell_volume ] || fail "D0 from the shell volume"
+  [ "$(field thick.csv marking)" = vertices+0.05 ] || fail "marking column $(field thick.csv marking)"
+  # porosity from the shell's enclosed volume: 1 - V / 27 with V a bit under 4 pi / 3
+  /usr/bin/python3 -c "import sys,math; p=float(sys.argv[1]); assert 1-4*math.pi/3/27 < p < 1-0.99*4*math.pi/3/27, p" \
+    "$(field tri.csv porosity_geometry)" || fail "porosity $(field tri.csv porosity_geometry)"
+}
+case_d0_from_off_comment() {
+  make_shell_packing
+  sed '1a # D0=2' packing.off > d0.off
+  "$percolate" d0.off --delta 0.05 -q > p.csv || fail "run"
+  [ "$(field p.csv d0)" = 2 ] || fail "d0 $(field p.csv d0)"
+  [ "$(field p.csv d0_source)" = file ] || fail "d0_source $(field p.csv d0_source)"
+  [ "$(field p.csv nx)" = 30 ] || fail "nx: 3 / (0.05 * 2) = 30, got $(field p.csv nx)"
+}
+case_periodic_labelling() {
+  # A shell packing percolates around the shell; --periodic changes the labelling only.
+  make_shell_packing
+  "$percolate" packing.off --delta 0.1 --periodic -q > per.csv || fail "periodic"
+  grep -q "^# labelling=periodic" per.csv || fail "meta"
+  [ "$(field per.csv percolates)" = 1 ] || fail "outside percolates"
+  [ "$(field per.csv clusters)" = 2 ] || fail "clusters"
+}
+case_sweep() {
+  for s in 1.0 1.2 1.7 1.8; do "$percolate" "$sc" --delta 0.1 --scale $s -q --csv r_$s.csv || fail "scale $s"; done
+  "$percolate" sweep r_*.csv --bins 2 > prob.csv || fail "sweep"
+  grep -q "^particles,delta,porosity_low,porosity_high,porosity_mean,packings,percolating,probability" prob.csv || fail "header"
+  [ "$(grep -vc '^#' prob.csv)" = 3 ] || fail "rows: $(cat prob.csv)"
+  # low-porosity bin: scales 1.7 and 1.8 (porosity < 0), neither percolates at delta = 0.1; high bin: both percolate
+  [ "$(grep -v '^#' prob.csv | sed -n 2p | cut -d, -f6-8)" = "2,0,0" ] || fail "low bin: $(cat prob.csv)"
+  [ "$(grep -v '^#' prob.csv | sed -n 3p | cut -d, -f6-8)" = "2,2,1" ] || fail "high bin: $(cat prob.csv)"
+}
+case_sweep_script() {
+  # scripts/percolation_sweep.sh: the pipeline for shellpack's jammed packings, on the simple
+  # cubic array: probability 1 at high porosity, 0 once the channels close (r > a/sqrt 2).
+  cp "$sc" a.xyz
+  bash "$src/scripts/percolation_sweep.sh" -b "$bin/.." -d 0.05,0.1 -s "1.0 1.3 1.75 1.8" -n 2 -o res a.xyz \
+    2>/dev/null || fail "script"
+  [ "$(grep -vc '^#' res/percolate.csv)" = 9 ] || fail "rows: $(cat res/percolate.csv)"
+  [ "$(grep -v '^#' res/percolation_probability.csv | awk -F, 'NR > 1 { print $2, $8 }' | sort -u | tr '\n' ' ')" = \
+    "0.05 0 0.05 1 0.1 0 0.1 1 " ] || fail "probabilities: $(cat res/percolation_probability.csv)"
+}
+case_bad_off_without_box() {
+  printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > nobox.off
+  expect_error 2 "nobox.off:1: .*box" "$percolate" nobox.off --delta 0.1 -o out.vtk
+}
+case_bad_shell_counts() {
+  printf 'OFF\n# box 2 2 2\n# shells 2 3 3\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > bad.off
+  expect_error 2 "bad.off:3: .*add up" "$percolate" bad.off --delta 0.1 -o out.vtk
+}
+case_bad_delta() {
+  expect_error 2 "delta must be positive" "$percolate" "$sc" --delta 0 -o out.vtk
+  expect_error 2 "delta must be positive" "$percolate" "$sc" --delta 0.1,-1 -o out.vtk
+  expect_error 2 "delta.*not a number" "$percolate" "$sc" --delta 0.1,x -o out.vtk
+  expect_error 2 "simple_cubic_4x4x4.xyz: .*larger than the box" "$percolate" "$sc" --delta 5 -o out.vtk
+  expect_error 2 "delta is required" "$percolate" "$sc" -o out.vtk
+}
+case_bad_sphere_file_without_radii() {
+  printf '1\nLattice="2 0 0 0 2 0 0 0 2" Properties=species:S:1:pos:R:3 pbc="T T T"\nX 1 1 1\n' > norad.xyz
+  expect_error 2 "norad.xyz:[0-9]*: .*radius" "$percolate" norad.xyz --delta 0.1 -o out.vtk
+}
+case_bad_later_file_writes_nothing() {
+  # The second file is bad: no VTK of the first one either, and no CSV.
+  cp "$sc" good.xyz
+  printf '1\nProperties=species:S:1:pos:R:3:radius:R:1\nX 1 1 1 0.5\n' > nolattice.xyz
+  expect_error 2 "nolattice.xyz:.*Lattice" "$percolate" good.xyz nolattice.xyz --delta 0.1 -o 'out.{name}.vtk' --csv out.csv
+}
+case_bad_options() {
+  expect_error 2 "marking" "$percolate" "$sc" --delta 0.1 --marking faces -o out.vtk
+  expect_error 2 "connectivity" "$percolate" "$sc" --delta 0.1 --connectivity 8 -o out.vtk
+  expect_error 2 "axis" "$percolate" "$sc" --delta 0.1 --axis w -o out.vtk
+  expect_error 2 "scale" "$percolate" "$sc" --delta 0.1 --scale -1 -o out.vtk
+  expect_error 2 "missing.xyz" "$percolate" missing.xyz --delta 0.1 -o out.vtk
+}
+
+if [ "${1:-}" = "--list" ]; then
+  declare -F | awk '{print $3}' | grep '^case_' | sed 's/^case_//'
+  exit 0
+fi
+"case_$1"

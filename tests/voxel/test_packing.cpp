@@ -1,0 +1,65 @@
+#include "voxel/packing.hpp"
+
+#include "core/errors.hpp"
+#include "spheremesh/subdivision.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+using namespace cmp::voxel;
+
+namespace {
+std::string write_file(const std::string& name, const std::string& text) {
+  const auto path = (std::filesystem::temp_directory_path() / ("cmp_voxel_" + name)).string();
+  std::ofstream(path) << text;
+  return path;
+}
+}  // namespace
+
+TEST_CASE("read_packing: spheres from extended XYZ, scaled, D0 from the radii or the file", "[voxel][packing]") {
+  const auto p = write_file("a.xyz",
+                            "2\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:pos:R:3:radius:R:1:contacts:I:1 "
+                            "pbc=\"T T T\"\nX 1 1 1 0.5 0\nX 3 3 3 0.7 0\n");
+  const auto s = read_packing(p, {1.1, 0});
+  CHECK(s.kind == Packing::Kind::Spheres);
+  CHECK(s.particles() == 2);
+  CHECK(s.radii[1] == Approx(0.77));
+  CHECK(s.d0 == Approx(1.2));
+  CHECK(s.d0_source == "mean_diameter");
+  CHECK(s.box == Eigen::Vector3d::Constant(4));
+  const auto withd0 = write_file("b.xyz",
+                                 "1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:pos:R:3:radius:R:1 D0=2\n"
+                                 "X 1 1 1 0.5\n");
+  CHECK(read_packing(withd0).d0 == 2);
+  CHECK(read_packing(withd0).d0_source == "file");
+  CHECK(read_packing(withd0, {1, 3}).d0_source == "option");
+  const auto noradius = write_file("c.xyz", "1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:pos:R:3\nX 1 1 1\n");
+  CHECK_THROWS_AS(read_packing(noradius), cmp::InputError);
+  CHECK_THROWS_WITH(read_packing(noradius), Catch::Contains("radius"));
+  const auto nolattice = write_file("d.xyz", "1\nProperties=species:S:1:pos:R:3:radius:R:1\nX 1 1 1 1\n");
+  CHECK_THROWS_WITH(read_packing(nolattice), Catch::Contains("Lattice"));
+}
+
+TEST_CASE("read_packing: shells from a packing OFF are unwrapped, and no box is an error", "[voxel][packing]") {
+  // One octahedron of radius 0.5 centred on the corner of a periodic box of side 2: its
+  // vertices wrapped into the box.
+  std::string off = "OFF\n# box 2 2 2\n# periodic 1 1 1\n# shells 1 6\n6 8 0\n";
+  off += "0.5 0 0\n1.5 0 0\n0 0.5 0\n0 1.5 0\n0 0 0.5\n0 0 1.5\n";
+  off += "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  const auto p = read_packing(write_file("oct.off", off));
+  CHECK(p.kind == Packing::Kind::Shells);
+  CHECK(p.particles() == 1);
+  CHECK((p.V.colwise().maxCoeff() - p.V.colwise().minCoeff()).maxCoeff() == Approx(1.0));  // unwrapped
+  // D0 from the volume: the octahedron's volume 4/3 r^3 = 1/6 -> D0 = (6 V / pi)^(1/3)
+  CHECK(p.d0 == Approx(std::cbrt(1.0 / M_PI)));
+  CHECK(p.d0_source == "shell_volume");
+  std::string nobox = off;
+  nobox.erase(nobox.find("# box 2 2 2\n"), 12);
+  CHECK_THROWS_WITH(read_packing(write_file("nobox.off", nobox)), Catch::Contains("box"));
+  std::string badcount = off;
+  badcount.replace(badcount.find("# shells 1 6"), 12, "# shells 2 3 4");
+  CHECK_THROWS_AS(read_packing(write_file("count.off", badcount)), cmp::InputError);
+}
