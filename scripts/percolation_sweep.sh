@@ -22,8 +22,10 @@ for s in $scales; do
   "$build/bin/percolate" "$@" --delta "$deltas" --scale "$s" -q --csv "$out/.scale_$s.csv"
   parts+=("$out/.scale_$s.csv")
 done
-{ grep '^#' "${parts[0]}"; grep -v '^#' "${parts[0]}" | head -n 1
-  for f in "${parts[@]}"; do grep -v '^#' "$f" | tail -n +2; done; } > "$out/percolate.csv"
+# The first file's comments and header, then every file's rows (awk reads whole files: no
+# early-closed pipe to trip pipefail on large tables).
+awk 'FNR == 1 { header = 0 } /^#/ { if (NR == FNR) print; next }
+     !header { header = 1; if (NR == FNR) print; next } { print }' "${parts[@]}" > "$out/percolate.csv"
 "$build/bin/percolate" sweep "${parts[@]}" --bins "$bins" -o "$out/percolation_probability.csv"
 rm -f "${parts[@]}"
 echo "$out/percolate.csv: $(($(grep -vc '^#' "$out/percolate.csv") - 1)) rows; $out/percolation_probability.csv" >&2
