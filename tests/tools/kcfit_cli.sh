@@ -13,21 +13,9 @@ fi
 flow="$src/data/kcfit/flow_synthetic.csv"
 thr="$src/data/kcfit/threshold_synthetic.csv"
 perc="$src/data/kcfit/percolation_synthetic.csv"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# expect_error STATUS PATTERN cmd...: the command fails with STATUS, one line on stderr that
-# starts with "kcfit: " and matches PATTERN, and leaves no output file (out.*) behind.
-expect_error() {
-  local want=$1 pattern=$2; shift 2
-  "$@" >stdout.txt 2>stderr.txt; local got=$?
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
-  grep -q "^kcfit: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
-  [ "$(grep -c . stderr.txt)" -eq 1 ] || fail "$*: more than one line on stderr: $(cat stderr.txt)"
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=kcfit
+enter_scratch_dir
 # value FILE PARAMETER: the fitted value of a parameter in kcfit's output.
 value() { awk -F, -v p="$2" '!/^#/ && $1 == p { print $2 }' "$1"; }
 near() { awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= tol) }'; }
@@ -145,11 +133,4 @@ case_fit_failures() {
   expect_error 1 "perfectly separated" "$kcfit" sep.csv --model sigmoid -o out.csv --plot out.png
 }
 
-cases=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
-if [ "${1:-}" = --list ]; then
-  echo "$cases"
-  exit 0
-fi
-declare -F "case_${1:-}" >/dev/null || { echo "unknown case '${1:-}'; cases: $(echo $cases)" >&2; exit 2; }
-"case_$1"
-echo "ok: $1"
+run_cases "$@"

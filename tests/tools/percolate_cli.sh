@@ -7,21 +7,9 @@ src=${CMP_SRC:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
 percolate="$bin/percolate"
 rndmesh="$bin/rndmesh"
 sc="$src/data/percolate/simple_cubic_4x4x4.xyz"  # 4x4x4 spheres r = 0.4 on a = 1, D0 = 1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# expect_error STATUS PATTERN cmd...: the command fails with STATUS, one line on stderr that
-# starts with "percolate: " and matches PATTERN, and leaves no output file (out.*) behind.
-expect_error() {
-  local want=$1 pattern=$2; shift 2
-  "$@" >stdout.txt 2>stderr.txt; local got=$?
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
-  [ "$(wc -l < stderr.txt)" -eq 1 ] || fail "$*: not one line on stderr: $(cat stderr.txt)"
-  grep -q "^percolate: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=percolate
+enter_scratch_dir
 # field CSV COLUMN [ROW]: the value of COLUMN in data row ROW (default 1) of a percolate CSV.
 field() {
   grep -v '^#' "$1" | awk -F, -v col="$2" -v row="${3:-1}" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == col) c = i; next }
@@ -183,8 +171,4 @@ case_bad_options() {
   expect_error 2 "missing.xyz" "$percolate" missing.xyz --delta 0.1 -o out.vtk
 }
 
-if [ "${1:-}" = "--list" ]; then
-  declare -F | awk '{print $3}' | grep '^case_' | sed 's/^case_//'
-  exit 0
-fi
-"case_$1"
+run_cases "$@"

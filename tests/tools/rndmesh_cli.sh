@@ -4,20 +4,9 @@
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 rndmesh="$bin/rndmesh"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# expect_error STATUS PATTERN cmd...: the command fails with STATUS, one line on stderr that
-# starts with "rndmesh: " and matches PATTERN, and leaves no output file (out.*) behind.
-expect_error() {
-  local want=$1 pattern=$2; shift 2
-  "$@" >stdout.txt 2>stderr.txt; local got=$?
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
-  grep -q "^rndmesh: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=rndmesh
+enter_scratch_dir
 off_counts() { awk '!/^#/ && NF { if (++n == 2) { print $1, $2; exit } }' "$1"; }
 
 case_help() {
@@ -125,8 +114,4 @@ case_bad_level() { expect_error 2 "level" "$rndmesh" icosa --level 0 -o out.off;
 case_bad_subcommand() { expect_error 2 "" "$rndmesh" dodeca -o out.off; }
 case_bad_output_folder() { expect_error 2 "no/such/dir/out.off" "$rndmesh" icosa -o no/such/dir/out.off; }
 
-if [ "${1:-}" = "--list" ]; then
-  declare -F | awk '{print $3}' | grep '^case_' | sed 's/^case_//'
-  exit 0
-fi
-"case_$1"
+run_cases "$@"

@@ -4,21 +4,9 @@
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 shellpack="$bin/shellpack"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# expect_error STATUS PATTERN cmd...: fails with STATUS, one stderr line "shellpack: ...PATTERN",
-# and no output file (out.*) left behind.
-expect_error() {
-  local want=$1 pattern=$2; shift 2
-  "$@" >stdout.txt 2>stderr.txt; local got=$?
-  [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
-  grep -q "^shellpack: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
-  [ "$(wc -l <stderr.txt)" -le 2 ] || fail "$*: more than a short message: $(cat stderr.txt)"
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=shellpack
+enter_scratch_dir
 column() {  # column NAME FILE: the values of a CSV column (header by name, # lines skipped)
   awk -F, -v name="$1" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == name) c = i; h = 1; next } { print $c }' "$2"
 }
@@ -87,5 +75,4 @@ case_bad_input() {
   expect_error 1 "no acceptable" "$shellpack" jam -N 16 --max-tries 1 --fire-max-iterations 3 -o out.xyz
 }
 
-if [ "${1:-}" = "--list" ]; then declare -F | awk '{print $3}' | grep '^case_' | sed 's/^case_//'; exit 0; fi
-"case_$1"
+run_cases "$@"
