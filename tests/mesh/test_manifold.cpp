@@ -91,7 +91,7 @@ TEST_CASE("manifold_report of a Moebius strip: one boundary loop, one seam misor
   CHECK(r.misoriented_edges == 1);  // no orientation gets it below one
 }
 
-TEST_CASE("manifold_report counts degenerate faces; describe() says it all", "[mesh][manifold]") {
+TEST_CASE("manifold_report counts degenerate faces and describe() says it all", "[mesh][manifold]") {
   auto c = fx::unit_cube();
   c.F.conservativeResize(13, 3);
   c.F.row(12) << 3, 3, 5;

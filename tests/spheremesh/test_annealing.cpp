@@ -76,7 +76,7 @@ TEST_CASE("Annealing lowers the energy and the acceptance as T falls", "[anneali
   CHECK(result.steps.back().energy_per_point < result.steps.front().energy_per_point);
 }
 
-TEST_CASE("Same seed, same points; another seed, other points", "[annealing]") {
+TEST_CASE("Same seed, same points, another seed, other points", "[annealing]") {
   AnnealingParameters p = thesis_defaults(150, 11);
   p.anneals = 10;
   p.sweeps_per_anneal = 10;

@@ -40,7 +40,7 @@ std::vector<double> jam_and_check(int n, int count) {
 double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
 }  // namespace
 
-TEST_CASE("Jammed packings are isostatic and rattler-free, N = 16, 32, 50; phi_J grows with N") {
+TEST_CASE("Jammed packings are isostatic and rattler-free, N = 16, 32, 50, and phi_J grows with N") {
   const auto phi16 = jam_and_check(16, 24);
   const auto phi32 = jam_and_check(32, 12);
   const auto phi50 = jam_and_check(50, 8);
@@ -54,7 +54,7 @@ TEST_CASE("Jammed packings are isostatic and rattler-free, N = 16, 32, 50; phi_J
   for (double p : phi50) CHECK(p < 0.66);
 }
 
-TEST_CASE("Jamming: same seed, same packing, whatever the thread count; another seed, another packing") {
+TEST_CASE("Jamming: same seed, same packing, whatever the thread count, another seed, another packing") {
   const JammingParameters p;
   const auto a = jam_spheres(20, 5, p);
   const int threads = omp_get_max_threads();

@@ -102,7 +102,7 @@ TEST_CASE("g(r) of jammed packings: contact peak at r = 1, split second peak at 
   CHECK(s.contact_number == Approx(6 - 4.0 / 50));
 }
 
-TEST_CASE("Sphere packings round-trip through extended XYZ; malformed files name their line") {
+TEST_CASE("Sphere packings round-trip through extended XYZ and malformed files name their line") {
   const auto p = fcc(2);
   const auto back = frame_to_packing(packing_to_frame(p));
   CHECK(back.box == p.box);
