@@ -3,7 +3,9 @@
 #include "core/errors.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace cmp::minimise {
 
@@ -59,6 +61,13 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   // the last step fused with the first half kick of this one (two passes over the state per
   // iteration instead of eight). At the start v = 0, so keep is 0.
   double keep = 0, mix = 0;
+  // Large states are cut into a fixed number of chunks of whole blocks, passed over by all
+  // threads; small ones are one chunk (an iteration too short for a fork/join).
+  const Eigen::Index blocks = n / p.block_size;
+  const int chunks = n >= kParallelFireSize ? kFireChunks : 1;
+  std::vector<Eigen::Index> chunk_begin(chunks + 1);
+  for (int c = 0; c <= chunks; ++c) chunk_begin[c] = blocks * c / chunks * p.block_size;
+  std::vector<std::array<double, 4>> sums(chunks);
   result.max_force = max_block_norm(f, p.block_size);
   for (long it = 0;; ++it) {
     result.iterations = it;
@@ -72,24 +81,24 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
     }
     // Mixing (previous step) and half kick, then drift.
     const double kick = 0.5 * dt * inverse_mass;
-    {
-      double* vp = v.data();
-      double* xp = x.data();
-      const double* fp = f.data();
-      const double cf = mix + kick;
-      for (Eigen::Index k = 0; k < n; ++k) {
+    const double cf = mix + kick;
+    double* vp = v.data();
+    double* xp = x.data();
+    const double* fp = f.data();
+#pragma omp parallel for schedule(static) if (chunks > 1)
+    for (int c = 0; c < chunks; ++c)
+      for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; ++k) {
         vp[k] = keep * vp[k] + cf * fp[k];
         xp[k] += dt * vp[k];
       }
-    }
     forces(x, f);
     ++result.force_evaluations;
-    // Second half kick, with the power P = v.F, |v|^2, |F|^2 and the largest |f_i| in one pass.
-    double power = 0, vv = 0, ff = 0, worst = 0;
-    {
-      double* vp = v.data();
-      const double* fp = f.data();
-      for (Eigen::Index k = 0; k < n; k += p.block_size) {
+    // Second half kick, with the power P = v.F, |v|^2, |F|^2 and the largest |f_i| in one pass;
+    // per chunk, then added in chunk order (the same sums for any thread count).
+#pragma omp parallel for schedule(static) if (chunks > 1)
+    for (int c = 0; c < chunks; ++c) {
+      double power = 0, vv = 0, ff = 0, worst = 0;
+      for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; k += p.block_size) {
         double block = 0;
         for (int b = 0; b < p.block_size; ++b) {
           const double fk = fp[k + b];
@@ -99,8 +108,14 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
         }
         ff += block;
         worst = std::max(worst, block);
-        if (std::isnan(block)) worst = block, k = n;  // reported above as a non-finite force
+        if (std::isnan(block)) { worst = block; break; }  // reported above as a non-finite force
       }
+      sums[c] = {power, vv, ff, worst};
+    }
+    double power = 0, vv = 0, ff = 0, worst = 0;
+    for (int c = 0; c < chunks; ++c) {
+      power += sums[c][0], vv += sums[c][1], ff += sums[c][2];
+      worst = std::isnan(sums[c][3]) || std::isnan(worst) ? std::nan("") : std::max(worst, sums[c][3]);
     }
     result.max_force = std::sqrt(worst);
     // FIRE: turn v towards F (applied in the next pass), adapt dt and alpha.

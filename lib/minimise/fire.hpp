@@ -56,9 +56,15 @@ using FireProgress = std::function<bool(long iterations, double max_force)>;
 
 // Relaxes x in place until max_i |f_i| <= force_tolerance or max_iterations steps.
 // x.size() must be a multiple of block_size. Deterministic: the same x and forces give the
-// same path. Cost per iteration: one force evaluation plus O(size) vector work.
+// same path, whatever the thread count. Cost per iteration: one force evaluation plus
+// O(size) vector work.
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& parameters,
                 const FireProgress& progress = {}, long progress_every = 1000);
+
+// From this many coordinates on, FIRE's vector passes run on all threads, over kFireChunks
+// fixed chunks whose sums are added in order: the same path for any thread count.
+inline constexpr Eigen::Index kParallelFireSize = 3 * 2048;
+inline constexpr int kFireChunks = 4;
 
 // max_i |f_i| over consecutive blocks of block_size coordinates.
 double max_block_norm(const Eigen::VectorXd& f, int block_size);

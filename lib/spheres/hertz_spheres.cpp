@@ -80,19 +80,44 @@ void HertzSpheres::build_list(const Eigen::VectorXd& x) {
   ++builds_;
 }
 
-void HertzSpheres::forces(const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-  ensure_list(x);
-  f.setZero(x.size());
-  const std::size_t m = first_.size();
-  for (std::size_t k = 0; k < m; ++k) {
+void HertzSpheres::add_pair_forces(const double* x, std::size_t begin, std::size_t end, double* f) const {
+  for (std::size_t k = begin; k < end; ++k) {
     const int i = first_[k], j = second_[k];
-    const Eigen::Vector3d d = minimum_image(&x[3 * i], &x[3 * j]);
+    const Eigen::Vector3d d = minimum_image(x + 3 * i, x + 3 * j);
     const double r2 = d.squaredNorm(), s = reach_[k];
     if (r2 >= s * s) continue;
     const double r = std::sqrt(r2), h = s - r;
     const Eigen::Vector3d fij = (prefactor_[k] * h * std::sqrt(h) / r) * d;
-    f.segment<3>(3 * i) += fij;
-    f.segment<3>(3 * j) -= fij;
+    for (int a = 0; a < 3; ++a) f[3 * i + a] += fij[a], f[3 * j + a] -= fij[a];
+  }
+}
+
+void HertzSpheres::forces(const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+  ensure_list(x);
+  const std::size_t m = first_.size();
+  const Eigen::Index n3 = x.size();
+  if (size() < kParallelForceSpheres) {
+    f.setZero(n3);
+    add_pair_forces(x.data(), 0, m, f.data());
+    return;
+  }
+  f.resize(n3);
+  chunk_forces_.resize(static_cast<std::size_t>(kForceChunks) * n3);
+  double* buffers = chunk_forces_.data();
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (int c = 0; c < kForceChunks; ++c) {
+      double* buffer = buffers + c * n3;
+      std::fill(buffer, buffer + n3, 0.0);
+      add_pair_forces(x.data(), m * c / kForceChunks, m * (c + 1) / kForceChunks, buffer);
+    }
+#pragma omp for schedule(static)
+    for (Eigen::Index k = 0; k < n3; ++k) {
+      double sum = buffers[k];
+      for (int c = 1; c < kForceChunks; ++c) sum += buffers[c * n3 + k];
+      f[k] = sum;
+    }
   }
 }
 

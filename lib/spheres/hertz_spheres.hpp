@@ -45,10 +45,16 @@ class HertzSpheres {
   int size() const { return static_cast<int>(radii_.size()); }
 
   // f = forces on every sphere (flat, like x). Rebuilds the pair list when some sphere moved
-  // more than skin/2 since the last build. Serial and deterministic: each sphere's force is
-  // summed over its partners in ascending order. Throws cmp::ComputationError when a sphere
-  // is wider than half the box (it would touch two images of another: N too small).
+  // more than skin/2 since the last build. Deterministic for any thread count: from
+  // kParallelForceSpheres spheres on, the pair list is cut into kForceChunks fixed chunks,
+  // each summed into its own buffer by whichever thread takes it, and the buffers are added
+  // in chunk order; below it one serial pass. Throws cmp::ComputationError when a sphere is
+  // wider than half the box (it would touch two images of another: N too small).
   void forces(const Eigen::VectorXd& x, Eigen::VectorXd& f);
+  // Below this many spheres an iteration is too short to pay for a fork/join.
+  static constexpr int kParallelForceSpheres = 2048;
+  // Chunks of the pair list: a fixed number, so the sums do not depend on the threads.
+  static constexpr int kForceChunks = 4;
   // Energy, pressure and the list of contacts at x.
   HertzState evaluate(const Eigen::VectorXd& x);
 
@@ -57,6 +63,8 @@ class HertzSpheres {
  private:
   void ensure_list(const Eigen::VectorXd& x);
   void build_list(const Eigen::VectorXd& x);
+  // Adds the forces of pairs [begin, end) of the list to f (flat, zeroed by the caller).
+  void add_pair_forces(const double* x, std::size_t begin, std::size_t end, double* f) const;
   Eigen::Vector3d minimum_image(const double* xi, const double* xj) const {
     Eigen::Vector3d d;
     for (int a = 0; a < 3; ++a) {
@@ -77,6 +85,7 @@ class HertzSpheres {
   // Hertz prefactor of each pair precomputed.
   std::vector<int> first_, second_;
   std::vector<double> reach_, prefactor_;
+  std::vector<double> chunk_forces_;  // kForceChunks buffers of 3N forces (large N only)
 };
 
 }  // namespace cmp::spheres

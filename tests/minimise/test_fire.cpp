@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include <omp.h>
+
 using namespace cmp::minimise;
 
 namespace {
@@ -97,4 +99,23 @@ TEST_CASE("FIRE rejects bad parameters and non-finite forces") {
   CHECK_THROWS_AS(fire(odd, zero, p), cmp::UsageError);
   const auto nan = [](const Eigen::VectorXd&, Eigen::VectorXd& f) { f = Eigen::VectorXd::Constant(3, std::nan("")); };
   CHECK_THROWS_AS(fire(x, nan, p), cmp::ComputationError);
+}
+
+TEST_CASE("FIRE on a large state (parallel chunked passes) follows one path on any thread count") {
+  const int n = static_cast<int>(kParallelFireSize) + 300;
+  const Bowl bowl(n);
+  FireParameters p;
+  p.force_tolerance = 1e-10;
+  p.block_size = 3;
+  const int threads = omp_get_max_threads();
+  Eigen::VectorXd x1 = Eigen::VectorXd::Zero(n), x2 = x1;
+  omp_set_num_threads(1);
+  const auto r1 = fire(x1, bowl, p);
+  omp_set_num_threads(2);
+  const auto r2 = fire(x2, bowl, p);
+  omp_set_num_threads(threads);
+  CHECK(r1.converged());
+  CHECK(r1.iterations == r2.iterations);
+  CHECK(x1 == x2);
+  CHECK((x1 - bowl.centre).cwiseAbs().maxCoeff() < 1e-5);
 }

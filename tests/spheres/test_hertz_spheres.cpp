@@ -2,10 +2,13 @@
 
 #include "core/errors.hpp"
 #include "core/random.hpp"
+#include "spheres/jamming.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+
+#include <omp.h>
 
 using namespace cmp::spheres;
 
@@ -115,4 +118,34 @@ TEST_CASE("Hertzian spheres: a sphere wider than half the box is refused") {
   CHECK_THROWS_AS(s.forces(x, f), cmp::ComputationError);
   CHECK_THROWS_AS(HertzSpheres(Eigen::Vector3d(1, 0, 1), radii, HertzMaterial{}), cmp::UsageError);
   CHECK_THROWS_AS(HertzSpheres(Eigen::Vector3d::Ones(), radii, HertzMaterial{1, 1.0}), cmp::UsageError);
+}
+
+TEST_CASE("Hertzian spheres: the chunked parallel force loop of large systems sums every contact, the same on any thread count") {
+  // Above kParallelForceSpheres the pair list is cut into fixed chunks summed into separate
+  // buffers; the result must be the forces of the contacts, bit for bit the same on 1 and 2
+  // threads.
+  const int n = HertzSpheres::kParallelForceSpheres + 500;
+  const double side = jamming_box_side(n);
+  cmp::Random random(3);
+  Eigen::VectorXd x(3 * n);
+  for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = side * random.uniform();
+  HertzSpheres s(Eigen::Vector3d::Constant(side), Eigen::VectorXd::Constant(n, 0.5), HertzMaterial{});
+  Eigen::VectorXd f1, f2;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  s.forces(x, f1);
+  omp_set_num_threads(2);
+  s.forces(x, f2);
+  omp_set_num_threads(threads);
+  CHECK(f1 == f2);
+  // The same forces from the contact list, pair by pair.
+  Eigen::VectorXd expected = Eigen::VectorXd::Zero(3 * n);
+  const auto state = s.evaluate(x);
+  REQUIRE(state.contacts.size() > static_cast<std::size_t>(n));
+  for (const auto& c : state.contacts) {
+    const Eigen::Vector3d fij = c.force * c.branch.normalized();
+    expected.segment<3>(3 * c.i) += fij;
+    expected.segment<3>(3 * c.j) -= fij;
+  }
+  CHECK((f1 - expected).cwiseAbs().maxCoeff() < 1e-12 * expected.cwiseAbs().maxCoeff());
 }
