@@ -5,6 +5,7 @@
 #include "spheres/hertz_spheres.hpp"
 #include "spheres/rattlers.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -20,6 +21,7 @@ void JammingParameters::validate() const {
   require(min_pressure > 0 && std::isfinite(min_pressure), "P_min must be positive");
   require(max_tries > 0, "max tries must be positive");
   require(max_size_changes > 0, "max size changes must be positive");
+  require(step_iteration_cap >= 0, "FIRE iteration cap per size change must not be negative");
   material.validate();
   fire.validate();
 }
@@ -60,16 +62,26 @@ Try jam_once(int n, double side, Random& random, const JammingParameters& p, int
   const double volume = side * side * side;
   double step = p.initial_step;
   bool inflating = true;
+  minimise::FireParameters step_fire = p.fire;
+  if (p.step_iteration_cap > 0) step_fire.max_iterations = std::min(p.fire.max_iterations, p.step_iteration_cap);
   for (;;) {
-    const auto fire = minimise::fire(t.x, forces, p.fire);
+    auto fire = minimise::fire(t.x, forces, step_fire);
     t.fire_iterations += fire.iterations;
-    t.max_force = fire.max_force;
-    if (!fire.converged()) { t.outcome = TryOutcome::FireCap; return t; }
+    const bool capped = !fire.converged() && p.step_iteration_cap > 0 && fire.stop == minimise::FireStop::MaxIterations;
+    if (!fire.converged() && !capped) { t.outcome = TryOutcome::FireCap; t.max_force = fire.max_force; return t; }
     t.state = system.evaluate(t.x);
+    if (capped && t.state.pressure > p.min_pressure && t.state.pressure < 2 * p.min_pressure) {
+      // In the window but unrelaxed: relax fully, then judge the pressure again.
+      fire = minimise::fire(t.x, forces, p.fire);
+      t.fire_iterations += fire.iterations;
+      if (!fire.converged()) { t.outcome = TryOutcome::FireCap; t.max_force = fire.max_force; return t; }
+      t.state = system.evaluate(t.x);
+    }
+    t.max_force = fire.max_force;
     const double P = t.state.pressure;
     const double phi = n * 4.0 / 3.0 * std::numbers::pi * std::pow(t.radius, 3) / volume;
     if (progress && !progress(attempt, t.size_changes, phi, P)) throw ComputationError("interrupted");
-    if (P > p.min_pressure && P < 2 * p.min_pressure) break;
+    if (fire.converged() && P > p.min_pressure && P < 2 * p.min_pressure) break;
     if (t.size_changes >= p.max_size_changes || step < 1e-15) return t;  // NoPressureWindow
     const bool inflate = P <= p.min_pressure;
     if (inflate != inflating) step /= 2, inflating = inflate;  // halve eps_r at each reversal

@@ -28,6 +28,11 @@ struct JammingParameters {
   long max_size_changes = 20000;          // per try
   bool reject_rattlers = true;
   bool require_isostatic = true;          // reject packings without exactly 3N - 2 contacts
+  // FIRE iterations allowed after each size change before the protocol moves on unrelaxed
+  // (0: relax every step to the tolerance, quasi-static). A cap makes the compression
+  // effectively faster, as an iteration-capped FIRE in the author's code would; the final
+  // packing is always relaxed to the tolerance before it is judged.
+  long step_iteration_cap = 0;
   JammingParameters() { fire.force_tolerance = 1e-15; }  // the thesis's max|f_i| <= 1e-15
   // Throws cmp::UsageError naming the first bad value.
   void validate() const;

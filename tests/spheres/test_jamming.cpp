@@ -85,3 +85,24 @@ TEST_CASE("Jamming: the isostaticity filter matters (small boxes crystallise), a
   p.fire.max_iterations = 5;  // every try hits the FIRE cap
   CHECK_THROWS_AS(jam_spheres(16, 1, p), cmp::ComputationError);
 }
+
+TEST_CASE("Jamming with FIRE capped after each size change still ends relaxed, isostatic and in the pressure window") {
+  // --step-fire-cap: the protocol moves on unrelaxed after the cap (a faster effective
+  // compression), but the packing it returns is relaxed to the tolerance before it is judged.
+  JammingParameters p;
+  p.step_iteration_cap = 200;
+  long capped_iterations = 0, full_iterations = 0;
+  for (int seed = 1; seed <= 4; ++seed) {
+    const auto r = jam_spheres(32, static_cast<std::uint64_t>(seed), p);
+    INFO("seed " << seed);
+    CHECK(r.max_force <= 1e-15);
+    CHECK(r.contacts == 3 * 32 - 2);
+    CHECK(r.pressure > p.min_pressure);
+    CHECK(r.pressure < 2 * p.min_pressure);
+    capped_iterations += r.fire_iterations;
+    full_iterations += jam_spheres(32, static_cast<std::uint64_t>(seed), JammingParameters{}).fire_iterations;
+  }
+  CHECK(capped_iterations != full_iterations);  // the cap changed the path
+  p.step_iteration_cap = -1;
+  CHECK_THROWS_AS(jam_spheres(32, 1, p), cmp::UsageError);
+}

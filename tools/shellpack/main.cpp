@@ -235,6 +235,9 @@ int main(int argc, char** argv) {
     jam->add_option("--poisson-ratio", p.material.poisson_ratio, "Poisson's ratio nu of the spheres");
     jam->add_option("--ftol", f.force_tolerance, "FIRE stops when max_i |f_i| <= this [E d^2]; thesis 1e-15");
     jam->add_option("--fire-max-iterations", f.max_iterations, "FIRE iteration cap per minimisation (a try that hits it is rejected)");
+    jam->add_option("--step-fire-cap", p.step_iteration_cap,
+                    "FIRE iterations after each size change before moving on unrelaxed (0: relax every step; "
+                    "the final packing is always relaxed to --ftol)");
     jam->add_option("--fire-dt", f.dt, "FIRE initial time step dt_FIRE");
     jam->add_option("--fire-dt-max", f.dt_max, "FIRE largest time step dt_FIRE^max");
     jam->add_option("--fire-alpha", f.alpha_start, "FIRE initial mixing alpha_FIRE");
