@@ -85,18 +85,15 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
     double* vp = v.data();
     double* xp = x.data();
     const double* fp = f.data();
-#pragma omp parallel for schedule(static) if (chunks > 1)
-    for (int c = 0; c < chunks; ++c)
+    const auto drift = [&](int c) {
       for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; ++k) {
         vp[k] = keep * vp[k] + cf * fp[k];
         xp[k] += dt * vp[k];
       }
-    forces(x, f);
-    ++result.force_evaluations;
+    };
     // Second half kick, with the power P = v.F, |v|^2, |F|^2 and the largest |f_i| in one pass;
     // per chunk, then added in chunk order (the same sums for any thread count).
-#pragma omp parallel for schedule(static) if (chunks > 1)
-    for (int c = 0; c < chunks; ++c) {
+    const auto kick_and_measure = [&](int c) {
       double power = 0, vv = 0, ff = 0, worst = 0;
       for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; k += p.block_size) {
         double block = 0;
@@ -111,6 +108,22 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
         if (std::isnan(block)) { worst = block; break; }  // reported above as a non-finite force
       }
       sums[c] = {power, vv, ff, worst};
+    };
+    // No OpenMP construct at all for one chunk: even an if(false) region costs about a
+    // microsecond, as long as a whole iteration of 50 spheres.
+    if (chunks == 1) {
+      drift(0);
+    } else {
+#pragma omp parallel for schedule(static)
+      for (int c = 0; c < chunks; ++c) drift(c);
+    }
+    forces(x, f);
+    ++result.force_evaluations;
+    if (chunks == 1) {
+      kick_and_measure(0);
+    } else {
+#pragma omp parallel for schedule(static)
+      for (int c = 0; c < chunks; ++c) kick_and_measure(c);
     }
     double power = 0, vv = 0, ff = 0, worst = 0;
     for (int c = 0; c < chunks; ++c) {
