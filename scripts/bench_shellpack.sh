@@ -62,3 +62,16 @@ LMP
   done
 } | tee "$out/shellpack_fire_lammps.csv" >&2
 rm -rf "$work"
+
+echo "== shellpack FIRE on large systems, 1 and 2 threads (the chunked parallel force loop and FIRE passes)" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "N,threads,iterations,seconds,particle_iterations_per_s"
+  for n in 1024 4096 16384; do
+    for t in 1 2; do
+      OMP_NUM_THREADS=$t "$bench/bench_spheres" fire $n 0.66 1e-12 1 |
+        awk -F, -v t=$t '{ printf "%d,%d,%d,%.4f,%.4g\n", $2, t, $6, $7, $8 }'
+    done
+  done
+} | tee "$out/shellpack_fire_threads.csv" >&2

@@ -13,4 +13,9 @@ SECTIONS = {
         f"{float(r['ours_particle_iterations_per_s']) / 1e6:.1f} M particle-it/s",
         f"LAMMPS in the same run: {float(r['lammps_seconds']):.3f} s, {r['lammps_iterations']} iterations, "
         f"{float(r['lammps_particle_iterations_per_s']) / 1e6:.1f} M particle-it/s; ours {float(r['speedup_time']):.1f}x faster"),
+    "shellpack_fire_threads.csv": lambda r: (
+        f"FIRE, Hertzian spheres at phi = 0.66 to max|f_i| 1e-12, {r['threads']} thread(s)", f"N = {r['N']}",
+        f"{float(r['seconds']):.3f} s, {r['iterations']} iterations, "
+        f"{float(r['particle_iterations_per_s']) / 1e6:.1f} M particle-it/s",
+        "(same path on any thread count; parallel from N = 2048)"),
 }
