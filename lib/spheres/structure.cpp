@@ -104,11 +104,17 @@ ContactStatistics contact_statistics(const SpherePacking& packing, const HertzMa
   if (s.rattlers < s.spheres) s.contact_number_without_rattlers = 2.0 * load_bearing_contacts / (s.spheres - s.rattlers);
   if (!s.forces.empty()) {
     s.mean_force = std::accumulate(s.forces.begin(), s.forces.end(), 0.0) / s.forces.size();
-    double var = 0;
-    for (double f : s.forces) var += (f - s.mean_force) * (f - s.mean_force);
-    s.force_cv = std::sqrt(var / s.forces.size()) / s.mean_force;
+    s.force_cv = coefficient_of_variation(s.forces);
   }
   return s;
+}
+
+double coefficient_of_variation(const std::vector<double>& values) {
+  if (values.empty()) return 0;
+  const double mean = std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+  double var = 0;
+  for (double v : values) var += (v - mean) * (v - mean);
+  return std::sqrt(var / values.size()) / mean;
 }
 
 Histogram normalised_histogram(const std::vector<double>& values, int bins, double max_ratio) {

@@ -40,6 +40,9 @@ struct ContactStatistics {
 // Contacts, Z, rattlers and contact forces of one packing under the Hertz law of `material`.
 ContactStatistics contact_statistics(const SpherePacking& packing, const HertzMaterial& material = {});
 
+// Population standard deviation over the mean (0 for no values).
+double coefficient_of_variation(const std::vector<double>& values);
+
 // Histogram of values / mean over [0, max_ratio) in `bins` bins, as a probability density
 // (integrates to the fraction of values inside the range).
 struct Histogram {

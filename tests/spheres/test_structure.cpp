@@ -1,4 +1,5 @@
 #include "spheres/structure.hpp"
+#include "spheres/structure_report.hpp"
 
 #include "core/errors.hpp"
 #include "core/random.hpp"
@@ -125,4 +126,17 @@ TEST_CASE("Sphere packings round-trip through extended XYZ and malformed files n
   const auto negative = write("negative.xyz", "2\nLattice=\"4 0 0 0 4 0 0 0 4\" " + header + "X 0 0 0 0.5\nX 2 2 2 -1\n");
   CHECK_THROWS_WITH(read_sphere_packings(negative), Catch::Contains("negative.xyz:4"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Pooled contacts: forces relative to each packing's mean, their cv, mean Z and rattlers") {
+  CHECK(coefficient_of_variation({}) == 0);
+  CHECK(coefficient_of_variation({1.0, 3.0}) == Approx(0.5));
+  ContactStatistics a, b;
+  a.forces = {1.0, 3.0}, a.mean_force = 2.0, a.contact_number = 6.0, a.rattlers = 1;
+  b.forces = {10.0, 30.0}, b.mean_force = 20.0, b.contact_number = 5.0, b.rattlers = 2;
+  const auto pooled = pool_contacts({a, b});
+  CHECK(pooled.relative_forces == std::vector<double>{0.5, 1.5, 0.5, 1.5});
+  CHECK(pooled.force_cv == Approx(0.5));
+  CHECK(pooled.mean_contact_number == Approx(5.5));
+  CHECK(pooled.rattlers == 3);
 }

@@ -8,13 +8,10 @@
 #include "core/errors.hpp"
 #include "core/parallel_for.hpp"
 #include "io/atomic_output.hpp"
-#include "io/csv.hpp"
 #include "io/xyz.hpp"
-#include "io/xyz_frame.hpp"
-#include "spheres/hertz_spheres.hpp"
 #include "spheres/jamming.hpp"
-#include "spheres/rattlers.hpp"
-#include "spheres/structure.hpp"
+#include "spheres/jamming_report.hpp"
+#include "spheres/structure_report.hpp"
 
 #include <fmt/format.h>
 
@@ -25,7 +22,6 @@
 #include <iostream>
 
 using namespace cmp;
-using io::format_number;
 
 namespace {
 
@@ -44,24 +40,6 @@ struct Options {
   std::string forces_output, summary_output;
   std::string output = "-";
 };
-
-// The packing with its contact counts and the protocol's figures, as OVITO/ASE read it.
-io::XyzFrame jammed_frame(const spheres::JammingResult& r, std::uint64_t seed, const std::string& provenance,
-                          const spheres::HertzMaterial& material) {
-  auto frame = spheres::packing_to_frame(r.packing);
-  spheres::HertzSpheres system(r.packing.box, r.packing.radii, material, 0.0);
-  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(r.packing.positions.data(), 3L * r.packing.size());
-  frame.set_integer_column("contacts", spheres::contact_counts(r.packing.size(), system.evaluate(x).contacts));
-  frame.set_info("tool", provenance);
-  frame.set_info("seed", std::to_string(seed));
-  frame.set_info("phi", format_number(r.packing.volume_fraction()));
-  frame.set_info("Z", format_number(r.contact_number()));
-  frame.set_info("contacts", std::to_string(r.contacts));
-  frame.set_info("pressure_E", format_number(r.pressure));
-  frame.set_info("max_force_E", format_number(r.max_force));
-  frame.set_info("diameter", format_number(r.packing.mean_diameter()));
-  return frame;
-}
 
 void run_jam(Options& o, const std::string& provenance) {
   auto& p = o.jamming;
@@ -86,45 +64,15 @@ void run_jam(Options& o, const std::string& provenance) {
     results[k] = spheres::jam_spheres(o.spheres, seeds[k], p);
     if (!o.packing_output.empty())
       io::write_xyz(cli::expand_pattern(o.packing_output, "seed", std::to_string(seeds[k])),
-                    {jammed_frame(results[k], seeds[k], provenance, p.material)});
+                    {spheres::jammed_frame(results[k], seeds[k], provenance, p.material)});
     const long finished = ++done;
     if (omp_get_thread_num() == 0) bar.update(static_cast<double>(finished));
   });
 
   io::AtomicOutput out(o.output);
-  io::CsvWriter csv(out.stream());
-  csv.meta("provenance", provenance);
-  csv.meta("E", format_number(p.material.youngs_modulus));
-  csv.meta("nu", format_number(p.material.poisson_ratio));
-  csv.meta("P_min", format_number(p.min_pressure));
-  csv.meta("eps_r", format_number(p.initial_step));
-  csv.meta("phi_0", format_number(p.initial_volume_fraction));
-  csv.meta("force_tolerance", format_number(p.fire.force_tolerance));
-  csv.meta("units", "pressure in E, energy in E d^3 (d: jammed diameter); max_force in the packing file's units "
-                    "(E times length^2, lengths such that d is about 1), the units of --ftol");
-  csv.header({"seed", "N", "phi_J", "Z", "contacts", "contacts_isostatic", "pressure_E", "energy_Ed3", "max_force",
-              "box_side_d", "fire_iterations", "size_changes", "rejected_tries", "rejected_rattlers",
-              "rejected_not_isostatic", "seconds"});
-  for (long k = 0; k < n; ++k) {
-    const auto& r = results[k];
-    const double d = r.packing.mean_diameter();
-    csv.row({std::to_string(seeds[k]), std::to_string(o.spheres), format_number(r.packing.volume_fraction()),
-             format_number(r.contact_number()), std::to_string(r.contacts),
-             std::to_string(spheres::isostatic_contacts(o.spheres)), format_number(r.pressure),
-             format_number(r.energy / (d * d * d)), format_number(r.max_force),
-             format_number(r.packing.box[0] / d), std::to_string(r.fire_iterations), std::to_string(r.size_changes),
-             std::to_string(r.rejected_tries), std::to_string(r.rejected_for_rattlers),
-             std::to_string(r.rejected_not_isostatic), fmt::format("{:.4f}", r.seconds)});
-  }
+  spheres::write_jamming_table(out.stream(), results, seeds, p, provenance);
   out.commit();
-  if (!o.common.quiet && n == 1) {
-    const auto& r = results.front();
-    std::cerr << fmt::format("shellpack: N = {}: phi_J = {:.5f}, Z = {:.4f} ({} contacts, isostatic {}), P = {:.3g} E, "
-                             "max|F| = {:.2g} E, {} FIRE iterations, {} rejected tries, {:.2f} s\n",
-                             o.spheres, r.packing.volume_fraction(), r.contact_number(), r.contacts,
-                             spheres::isostatic_contacts(o.spheres), r.pressure, r.max_force, r.fire_iterations,
-                             r.rejected_tries, r.seconds);
-  }
+  if (!o.common.quiet && n == 1) std::cerr << "shellpack: " << spheres::jamming_summary(results.front()) << "\n";
 }
 
 void run_structure(const Options& o, const std::string& provenance) {
@@ -141,73 +89,21 @@ void run_structure(const Options& o, const std::string& provenance) {
   const auto rdf = spheres::radial_distribution(packings, o.bin_width, o.r_max);
   std::vector<spheres::ContactStatistics> stats(packings.size());
   parallel_for_each_job(static_cast<long>(packings.size()), [&](long k) { stats[k] = spheres::contact_statistics(packings[k]); });
-  std::vector<double> all_forces;
-  double z_sum = 0;
-  long rattlers = 0;
-  for (const auto& s : stats) {
-    // Forces relative to their packing's mean, so that packings at different pressures pool.
-    for (double f : s.forces) all_forces.push_back(f / s.mean_force);
-    z_sum += s.contact_number;
-    rattlers += s.rattlers;
-  }
-  double cv = 0;
-  if (!all_forces.empty()) {
-    double m = 0, v = 0;
-    for (double f : all_forces) m += f;
-    m /= all_forces.size();
-    for (double f : all_forces) v += (f - m) * (f - m);
-    cv = std::sqrt(v / all_forces.size()) / m;
-  }
+  const auto pooled = spheres::pool_contacts(stats);
 
   io::AtomicOutput out(o.output);
   std::unique_ptr<io::AtomicOutput> forces_out, summary_out;
   if (!o.forces_output.empty()) forces_out = std::make_unique<io::AtomicOutput>(o.forces_output);
   if (!o.summary_output.empty()) summary_out = std::make_unique<io::AtomicOutput>(o.summary_output);
-  {
-    io::CsvWriter csv(out.stream());
-    csv.meta("provenance", provenance);
-    csv.meta("packings", std::to_string(packings.size()));
-    csv.meta("Z_mean", format_number(z_sum / packings.size()));
-    csv.meta("rattlers", std::to_string(rattlers));
-    csv.meta("force_cv", format_number(cv));
-    csv.meta("units", "r in mean diameters; g normalised to the ideal gas of the same density");
-    csv.header({"r_d", "g", "pairs"});
-    for (std::size_t b = 0; b < rdf.r.size(); ++b)
-      csv.row({format_number(rdf.r[b]), format_number(rdf.g[b]), std::to_string(rdf.pair_counts[b])});
-  }
-  if (forces_out) {
-    const auto h = spheres::normalised_histogram(all_forces, o.force_bins, 4.0);
-    io::CsvWriter csv(forces_out->stream());
-    csv.meta("provenance", provenance);
-    csv.meta("contacts", std::to_string(all_forces.size()));
-    csv.meta("force_cv", format_number(cv));
-    csv.header({"f_over_mean", "probability_density"});
-    for (std::size_t b = 0; b < h.centres.size(); ++b) csv.row({format_number(h.centres[b]), format_number(h.density[b])});
-  }
-  if (summary_out) {
-    io::CsvWriter csv(summary_out->stream());
-    csv.meta("provenance", provenance);
-    csv.header({"packing", "N", "phi", "Z", "contacts", "rattlers", "Z_without_rattlers", "pressure_E",
-                "mean_force_Ed2", "force_cv", "max_overlap_d"});
-    for (std::size_t k = 0; k < stats.size(); ++k) {
-      const auto& s = stats[k];
-      csv.row({labels[k], std::to_string(s.spheres), format_number(s.volume_fraction), format_number(s.contact_number),
-               std::to_string(s.contacts), std::to_string(s.rattlers), format_number(s.contact_number_without_rattlers),
-               format_number(s.pressure), format_number(s.mean_force), format_number(s.force_cv),
-               format_number(s.max_overlap)});
-    }
-  }
+  spheres::write_rdf_table(out.stream(), rdf, pooled, packings.size(), provenance);
+  if (forces_out) spheres::write_force_distribution_table(forces_out->stream(), pooled, o.force_bins, provenance);
+  if (summary_out) spheres::write_contact_summary_table(summary_out->stream(), labels, stats, provenance);
   out.commit();
   if (forces_out) forces_out->commit();
   if (summary_out) summary_out->commit();
   if (!o.common.quiet)
-    for (std::size_t k = 0; k < stats.size(); ++k) {
-      const auto& s = stats[k];
-      std::cerr << fmt::format("shellpack: {}: N = {}, phi = {:.5f}, Z = {:.4f} ({} contacts), {} rattlers, "
-                               "P = {:.3g} E, contact force cv = {:.3f}\n",
-                               labels[k], s.spheres, s.volume_fraction, s.contact_number, s.contacts, s.rattlers,
-                               s.pressure, s.force_cv);
-    }
+    for (std::size_t k = 0; k < stats.size(); ++k)
+      std::cerr << "shellpack: " << spheres::contact_summary(labels[k], stats[k]) << "\n";
 }
 
 }  // namespace

@@ -1,0 +1,68 @@
+#include "spheres/jamming_report.hpp"
+
+#include "io/csv.hpp"
+#include "io/xyz_frame.hpp"
+#include "spheres/hertz_spheres.hpp"
+#include "spheres/rattlers.hpp"
+
+#include <fmt/format.h>
+
+namespace cmp::spheres {
+
+using io::format_number;
+
+io::XyzFrame jammed_frame(const JammingResult& r, std::uint64_t seed, const std::string& provenance,
+                          const HertzMaterial& material) {
+  auto frame = packing_to_frame(r.packing);
+  HertzSpheres system(r.packing.box, r.packing.radii, material, 0.0);
+  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(r.packing.positions.data(), 3L * r.packing.size());
+  frame.set_integer_column("contacts", contact_counts(r.packing.size(), system.evaluate(x).contacts));
+  frame.set_info("tool", provenance);
+  frame.set_info("seed", std::to_string(seed));
+  frame.set_info("phi", format_number(r.packing.volume_fraction()));
+  frame.set_info("Z", format_number(r.contact_number()));
+  frame.set_info("contacts", std::to_string(r.contacts));
+  frame.set_info("pressure_E", format_number(r.pressure));
+  frame.set_info("max_force_E", format_number(r.max_force));
+  frame.set_info("diameter", format_number(r.packing.mean_diameter()));
+  return frame;
+}
+
+void write_jamming_table(std::ostream& out, const std::vector<JammingResult>& results,
+                         const std::vector<std::uint64_t>& seeds, const JammingParameters& p,
+                         const std::string& provenance) {
+  io::CsvWriter csv(out);
+  csv.meta("provenance", provenance);
+  csv.meta("E", format_number(p.material.youngs_modulus));
+  csv.meta("nu", format_number(p.material.poisson_ratio));
+  csv.meta("P_min", format_number(p.min_pressure));
+  csv.meta("eps_r", format_number(p.initial_step));
+  csv.meta("phi_0", format_number(p.initial_volume_fraction));
+  csv.meta("force_tolerance", format_number(p.fire.force_tolerance));
+  csv.meta("units", "pressure in E, energy in E d^3 (d: jammed diameter); max_force in the packing file's units "
+                    "(E times length^2, lengths such that d is about 1), the units of --ftol");
+  csv.header({"seed", "N", "phi_J", "Z", "contacts", "contacts_isostatic", "pressure_E", "energy_Ed3", "max_force",
+              "box_side_d", "fire_iterations", "size_changes", "rejected_tries", "rejected_rattlers",
+              "rejected_not_isostatic", "seconds"});
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const auto& r = results[k];
+    const int n = r.packing.size();
+    const double d = r.packing.mean_diameter();
+    csv.row({std::to_string(seeds[k]), std::to_string(n), format_number(r.packing.volume_fraction()),
+             format_number(r.contact_number()), std::to_string(r.contacts), std::to_string(isostatic_contacts(n)),
+             format_number(r.pressure), format_number(r.energy / (d * d * d)), format_number(r.max_force),
+             format_number(r.packing.box[0] / d), std::to_string(r.fire_iterations), std::to_string(r.size_changes),
+             std::to_string(r.rejected_tries), std::to_string(r.rejected_for_rattlers),
+             std::to_string(r.rejected_not_isostatic), fmt::format("{:.4f}", r.seconds)});
+  }
+}
+
+std::string jamming_summary(const JammingResult& r) {
+  const int n = r.packing.size();
+  return fmt::format("N = {}: phi_J = {:.5f}, Z = {:.4f} ({} contacts, isostatic {}), P = {:.3g} E, "
+                     "max|F| = {:.2g} E, {} FIRE iterations, {} rejected tries, {:.2f} s",
+                     n, r.packing.volume_fraction(), r.contact_number(), r.contacts, isostatic_contacts(n), r.pressure,
+                     r.max_force, r.fire_iterations, r.rejected_tries, r.seconds);
+}
+
+}  // namespace cmp::spheres

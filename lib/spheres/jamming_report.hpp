@@ -1,0 +1,32 @@
+#pragma once
+// What `shellpack jam` reports of its packings: the packing as an extended XYZ frame with its
+// contacts and protocol figures (OVITO, ASE), a CSV row per packing, a one-line summary.
+#include "spheres/jamming.hpp"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace cmp::io {
+struct XyzFrame;
+}
+
+namespace cmp::spheres {
+
+// The packing of r with a `contacts` column and info pairs phi, Z, contacts, pressure_E,
+// max_force_E, diameter, seed and tool (the provenance).
+io::XyzFrame jammed_frame(const JammingResult& r, std::uint64_t seed, const std::string& provenance,
+                          const HertzMaterial& material);
+
+// The CSV of `shellpack jam`: the parameters as `# key=value` lines, then one row per packing
+// (results[k] made from seeds[k]) with phi_J, Z, contacts, pressure, energy, max force, FIRE
+// iterations, size changes, rejected tries by reason and wall time.
+void write_jamming_table(std::ostream& out, const std::vector<JammingResult>& results,
+                         const std::vector<std::uint64_t>& seeds, const JammingParameters& parameters,
+                         const std::string& provenance);
+
+// "N = 50: phi_J = 0.62..., Z = ..., P = ..., ..." for stderr.
+std::string jamming_summary(const JammingResult& r);
+
+}  // namespace cmp::spheres
