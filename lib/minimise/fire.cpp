@@ -1,6 +1,7 @@
 #include "minimise/fire.hpp"
 
 #include "core/errors.hpp"
+#include "core/fixed_chunks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -63,10 +64,9 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   double keep = 0, mix = 0;
   // Large states are cut into a fixed number of chunks of whole blocks, passed over by all
   // threads; small ones are one chunk (an iteration too short for a fork/join).
-  const Eigen::Index blocks = n / p.block_size;
   const int chunks = n >= kParallelFireSize ? kFireChunks : 1;
-  std::vector<Eigen::Index> chunk_begin(chunks + 1);
-  for (int c = 0; c <= chunks; ++c) chunk_begin[c] = blocks * c / chunks * p.block_size;
+  std::vector<Eigen::Index> bounds(chunks + 1);
+  for (int c = 0; c <= chunks; ++c) bounds[c] = chunk_begin(n, chunks, c, p.block_size);
   std::vector<std::array<double, 4>> sums(chunks);
   result.max_force = max_block_norm(f, p.block_size);
   for (long it = 0;; ++it) {
@@ -86,7 +86,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
     double* xp = x.data();
     const double* fp = f.data();
     const auto drift = [&](int c) {
-      for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; ++k) {
+      for (Eigen::Index k = bounds[c]; k < bounds[c + 1]; ++k) {
         vp[k] = keep * vp[k] + cf * fp[k];
         xp[k] += dt * vp[k];
       }
@@ -95,7 +95,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
     // per chunk, then added in chunk order (the same sums for any thread count).
     const auto kick_and_measure = [&](int c) {
       double power = 0, vv = 0, ff = 0, worst = 0;
-      for (Eigen::Index k = chunk_begin[c]; k < chunk_begin[c + 1]; k += p.block_size) {
+      for (Eigen::Index k = bounds[c]; k < bounds[c + 1]; k += p.block_size) {
         double block = 0;
         for (int b = 0; b < p.block_size; ++b) {
           const double fk = fp[k + b];
@@ -109,22 +109,10 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       }
       sums[c] = {power, vv, ff, worst};
     };
-    // No OpenMP construct at all for one chunk: even an if(false) region costs about a
-    // microsecond, as long as a whole iteration of 50 spheres.
-    if (chunks == 1) {
-      drift(0);
-    } else {
-#pragma omp parallel for schedule(static)
-      for (int c = 0; c < chunks; ++c) drift(c);
-    }
+    for_each_chunk(chunks, drift);
     forces(x, f);
     ++result.force_evaluations;
-    if (chunks == 1) {
-      kick_and_measure(0);
-    } else {
-#pragma omp parallel for schedule(static)
-      for (int c = 0; c < chunks; ++c) kick_and_measure(c);
-    }
+    for_each_chunk(chunks, kick_and_measure);
     double power = 0, vv = 0, ff = 0, worst = 0;
     for (int c = 0; c < chunks; ++c) {
       power += sums[c][0], vv += sums[c][1], ff += sums[c][2];

@@ -1,6 +1,7 @@
 #include "spheres/hertz_spheres.hpp"
 
 #include "core/errors.hpp"
+#include "core/fixed_chunks.hpp"
 #include "neighbours/cell_grid.hpp"
 
 #include <algorithm>
@@ -104,21 +105,18 @@ void HertzSpheres::forces(const Eigen::VectorXd& x, Eigen::VectorXd& f) {
   f.resize(n3);
   chunk_forces_.resize(static_cast<std::size_t>(kForceChunks) * n3);
   double* buffers = chunk_forces_.data();
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (int c = 0; c < kForceChunks; ++c) {
-      double* buffer = buffers + c * n3;
-      std::fill(buffer, buffer + n3, 0.0);
-      add_pair_forces(x.data(), m * c / kForceChunks, m * (c + 1) / kForceChunks, buffer);
-    }
-#pragma omp for schedule(static)
-    for (Eigen::Index k = 0; k < n3; ++k) {
+  for_each_chunk(kForceChunks, [&](int c) {
+    double* buffer = buffers + c * n3;
+    std::fill(buffer, buffer + n3, 0.0);
+    add_pair_forces(x.data(), chunk_begin(m, kForceChunks, c), chunk_begin(m, kForceChunks, c + 1), buffer);
+  });
+  for_each_chunk(kForceChunks, [&](int c) {
+    for (Eigen::Index k = chunk_begin(n3, kForceChunks, c); k < chunk_begin(n3, kForceChunks, c + 1); ++k) {
       double sum = buffers[k];
-      for (int c = 1; c < kForceChunks; ++c) sum += buffers[c * n3 + k];
+      for (int b = 1; b < kForceChunks; ++b) sum += buffers[b * n3 + k];
       f[k] = sum;
     }
-  }
+  });
 }
 
 HertzState HertzSpheres::evaluate(const Eigen::VectorXd& x) {

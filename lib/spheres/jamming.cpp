@@ -64,24 +64,27 @@ Try jam_once(int n, double side, Random& random, const JammingParameters& p, int
   bool inflating = true;
   minimise::FireParameters step_fire = p.fire;
   if (p.step_iteration_cap > 0) step_fire.max_iterations = std::min(p.fire.max_iterations, p.step_iteration_cap);
-  for (;;) {
-    auto fire = minimise::fire(t.x, forces, step_fire);
+  const auto relax = [&](const minimise::FireParameters& fire_parameters) {
+    const auto fire = minimise::fire(t.x, forces, fire_parameters);
     t.fire_iterations += fire.iterations;
-    const bool capped = !fire.converged() && p.step_iteration_cap > 0 && fire.stop == minimise::FireStop::MaxIterations;
-    if (!fire.converged() && !capped) { t.outcome = TryOutcome::FireCap; t.max_force = fire.max_force; return t; }
+    t.max_force = fire.max_force;
+    return fire;
+  };
+  const auto in_window = [&](double P) { return P > p.min_pressure && P < 2 * p.min_pressure; };
+  for (;;) {
+    auto fire = relax(step_fire);
+    const bool capped = p.step_iteration_cap > 0 && fire.stop == minimise::FireStop::MaxIterations;
+    if (!fire.converged() && !capped) { t.outcome = TryOutcome::FireCap; return t; }
     t.state = system.evaluate(t.x);
-    if (capped && t.state.pressure > p.min_pressure && t.state.pressure < 2 * p.min_pressure) {
-      // In the window but unrelaxed: relax fully, then judge the pressure again.
-      fire = minimise::fire(t.x, forces, p.fire);
-      t.fire_iterations += fire.iterations;
-      if (!fire.converged()) { t.outcome = TryOutcome::FireCap; t.max_force = fire.max_force; return t; }
+    if (capped && in_window(t.state.pressure)) {  // in the window but unrelaxed: relax fully, judge again
+      fire = relax(p.fire);
+      if (!fire.converged()) { t.outcome = TryOutcome::FireCap; return t; }
       t.state = system.evaluate(t.x);
     }
-    t.max_force = fire.max_force;
     const double P = t.state.pressure;
     const double phi = n * 4.0 / 3.0 * std::numbers::pi * std::pow(t.radius, 3) / volume;
     if (progress && !progress(attempt, t.size_changes, phi, P)) throw ComputationError("interrupted");
-    if (fire.converged() && P > p.min_pressure && P < 2 * p.min_pressure) break;
+    if (fire.converged() && in_window(P)) break;
     if (t.size_changes >= p.max_size_changes || step < 1e-15) return t;  // NoPressureWindow
     const bool inflate = P <= p.min_pressure;
     if (inflate != inflating) step /= 2, inflating = inflate;  // halve eps_r at each reversal
