@@ -21,7 +21,8 @@ void for_each_chunk(int chunks, Body&& body) {
     body(0);
     return;
   }
-#pragma omp parallel for schedule(static)
+  // Dynamic: when another process slows one thread down, the others take its chunks.
+#pragma omp parallel for schedule(dynamic, 1)
   for (int c = 0; c < chunks; ++c) body(c);
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/fixed_chunks.hpp"
+#include "core/thread_governor.hpp"
 
 #include <algorithm>
 #include <array>
@@ -68,8 +69,11 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   std::vector<Eigen::Index> bounds(chunks + 1);
   for (int c = 0; c <= chunks; ++c) bounds[c] = chunk_begin(n, chunks, c, p.block_size);
   std::vector<std::array<double, 4>> sums(chunks);
+  // One thread or all, whichever runs faster now (another process may hold a core); the
+  // result is the same either way.
+  ThreadGovernor governor(chunks > 1 ? 0 : 1);
   result.max_force = max_block_norm(f, p.block_size);
-  for (long it = 0;; ++it) {
+  for (long it = 0;; ++it, governor.tick()) {
     result.iterations = it;
     if (!std::isfinite(result.max_force))
       throw ComputationError("FIRE: non-finite force after " + std::to_string(it) + " iterations");

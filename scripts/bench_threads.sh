@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# make bench, threads under load: every parallel path on 1 thread, on 2 threads, and on 2
+# threads while another process keeps one core busy (`sh -c 'while :; do :; done'`), as
+# happens under make -j or on a shared node. The loaded two-thread run should stay within
+# about 20 % of the quiet one-thread run. Sourced by scripts/bench.sh ($build, $bench, $out,
+# $machine, $stamp); the best of BENCH_REPEAT runs (default 2) of each case is kept.
+echo "== threads under load: 1 thread, 2 threads, 2 threads with another process busy on one core" >&2
+work=$(mktemp -d)
+repeat=${BENCH_REPEAT:-2}
+bin="$build/bin"
+"$bench/bench_fit" data >"$work/kc.csv"
+
+# name|what it runs|command ({T}: the thread count)
+cases=(
+  "fire_hertz_4096|FIRE + Hertz forces, 4096 spheres, phi 0.66, max force 1e-12|OMP_NUM_THREADS={T} $bench/bench_spheres fire 4096 0.66 1e-12 1"
+  "percolate_marking|percolate marking: 50 shells x 2562 vertices, delta 0.03|$bench/bench_voxel voxelise {T}"
+  "percolate_labelling|percolate labelling: 256^3 random image, porosity 0.35|$bench/bench_voxel label 256 0.35 {T}"
+  "rndmesh_seeds|rndmesh random -n 300 --seeds 1:4|$bin/rndmesh random -n 300 --seeds 1:4 --threads {T} -q -o $work/m_{seed}.off"
+  "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
+)
+
+# Wall seconds of the best of $repeat runs of a command.
+best_time() {
+  local best="" t0 t1 s
+  for _ in $(seq "$repeat"); do
+    t0=$(date +%s.%N)
+    bash -c "$1" >/dev/null 2>&1 || { echo NaN; return; }
+    t1=$(date +%s.%N)
+    s=$(echo "$t1 - $t0" | bc -l)
+    if [ -z "$best" ] || [ "$(echo "$s < $best" | bc -l)" = 1 ]; then best=$s; fi
+  done
+  printf '%.3f' "$best"
+}
+
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "# wait_policy=${OMP_WAIT_POLICY:-toolkit default (passive)}"
+  echo "case,what,threads_1_s,threads_2_s,loaded_threads_2_s,loaded_over_quiet_1"
+  for c in "${cases[@]}"; do
+    IFS='|' read -r name what cmd <<<"$c"
+    one=$(best_time "${cmd//\{T\}/1}")
+    two=$(best_time "${cmd//\{T\}/2}")
+    sh -c 'while :; do :; done' &
+    load=$!
+    loaded=$(best_time "${cmd//\{T\}/2}")
+    kill "$load"; wait "$load" 2>/dev/null || true
+    ratio=$(echo "$loaded / $one" | bc -l 2>/dev/null || echo NaN)
+    printf '%s,"%s",%s,%s,%s,%.2f\n' "$name" "$what" "$one" "$two" "$loaded" "$ratio"
+  done
+} | tee "$out/threads_loaded.csv" >&2
+rm -rf "$work"

@@ -1,0 +1,55 @@
+#include "core/thread_governor.hpp"
+
+#include <catch2/catch.hpp>
+#include <omp.h>
+
+#include <chrono>
+#include <thread>
+
+namespace {
+
+// Runs ticks for about `seconds`, each taking `slow` when the OpenMP thread count is `slow_threads`
+// and `fast` otherwise, as an iteration would under load; returns the thread count at the end.
+int settle(cmp::ThreadGovernor& g, int slow_threads, double seconds) {
+  using namespace std::chrono;
+  const auto end = steady_clock::now() + duration<double>(seconds);
+  while (steady_clock::now() < end) {
+    const bool slow = omp_get_max_threads() == slow_threads;
+    std::this_thread::sleep_for(microseconds(slow ? 400 : 100));
+    g.tick();
+  }
+  return g.threads();
+}
+
+}  // namespace
+
+TEST_CASE("thread governor: moves to one thread when two run slower and back when they run faster") {
+  omp_set_num_threads(2);
+  {
+    cmp::ThreadGovernor g(2);
+    CHECK(g.threads() == 2);
+    CHECK(settle(g, 2, 0.4) == 1);  // two threads four times slower: one thread wins
+    CHECK(omp_get_max_threads() == 1);
+    CHECK(settle(g, 1, 2.5) == 2);  // the load went away: back to two
+    CHECK(g.switches() >= 2);
+  }
+  CHECK(omp_get_max_threads() == 2);  // restored
+}
+
+TEST_CASE("thread governor: inert for one thread and inside a parallel region") {
+  omp_set_num_threads(2);
+  cmp::ThreadGovernor one(1);
+  CHECK(one.threads() == 1);
+  CHECK(settle(one, 1, 0.05) == 1);
+  CHECK(omp_get_max_threads() == 2);
+  int inside = 0;
+#pragma omp parallel num_threads(2)
+  {
+#pragma omp single
+    {
+      cmp::ThreadGovernor nested(2);
+      inside = nested.threads();
+    }
+  }
+  CHECK(inside == 1);
+}
