@@ -10,7 +10,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure run install clean
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -46,6 +46,7 @@ bench: deps all
 
 # Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
 tables: deps all
+	@mkdir -p $(OUT)/tables
 	@scripts/thesis_tables.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
 
 # Figs S5.1/S5.2: phi_J and Z of 100 jammed packings per N against the thesis ($(OUT)/figures/).
@@ -68,5 +69,10 @@ install: all
 	  help2man --no-info --no-discard-stderr --help-option=--help-all "$$tool" > $(DESTDIR)$(PREFIX)/share/man/man1/$$(basename $$tool).1; \
 	done
 
+# Removes the builds; results in $(OUT)/ (demo, benchmarks, figures, tables) stay.
 clean:
-	rm -rf $(BUILD) build-asan $(OUT)
+	rm -rf $(BUILD) build-asan
+
+# Removes the results in $(OUT)/ as well: everything make run, bench, tables and the figures wrote.
+clean-results:
+	rm -rf $(OUT)
