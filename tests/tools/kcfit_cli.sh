@@ -41,6 +41,7 @@ case_list_models() {
   grep -q "default columns --x porosity --y permeability_delta2 or permeability_d02 or permeability" models.txt ||
     fail "permeability columns"
   grep -q "default columns --x porosity --y rh_sites_d0 or hydraulic_radius" models.txt || fail "R_h columns"
+  grep -q "^    permeability_delta2  permeability in units of delta^2" models.txt || fail "column meanings"
 }
 case_fit_csv() {
   "$kcfit" "$flow" --model kc-percolation --x porosity --y permeability --loss log >fit.csv 2>err.txt || fail "fit"

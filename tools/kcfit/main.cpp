@@ -68,6 +68,18 @@ void list_models() {
       std::cout << fmt::format("    {:<11} {}{}\n", p.name, p.meaning,
                                p.fixed_by_default ? fmt::format(" (fixed at {} unless --free {})", p.start, p.name) : "");
   }
+  std::cout << "columns (as percolate, percolate sweep, lbflow and kcfit write them):\n"
+               "    porosity             geometric porosity of a packing (percolate)\n"
+               "    percolates           0/1: the void percolates along the flow axis (percolate, one row per run)\n"
+               "    probability          fraction percolating per porosity bin, probability_error its binomial\n"
+               "                         standard error (percolate sweep)\n"
+               "    delta                voxel side in D_0\n"
+               "    phi_c, phi_c_error   threshold per group (kcfit --model sigmoid --group-by delta)\n"
+               "    permeability_delta2  permeability in units of delta^2 (lbflow's lattice units);\n"
+               "                         permeability_d02 in D_0^2\n"
+               "    rh_sites_d0          hydraulic radius in D_0 (percolate)\n"
+               "    tortuosity           hydraulic tortuosity tau_H (lbflow)\n"
+               "    <y>_error            standard error of y: weights the linear loss (--sigma)\n";
 }
 
 // The column given by the option, else the model's first default present.
@@ -319,7 +331,8 @@ int main(int argc, char** argv) {
     app->add_option("--bootstrap", o.bootstrap, "also estimate errors from N bootstrap resamples")->check(CLI::Range(0, 10000000));
     cli::add_seed_option(*app, o.common);
     cli::add_threads_option(*app, o.common);
-    app->add_option("-o,--output", o.output, "output CSV: parameters, errors, covariance ('-': stdout)");
+    app->add_option("-o,--output", o.output, "output CSV: one row per parameter (value, error, covariance), or with --group-by one row per group "
+                  "(group columns, then <p>,<p>_error ...); '-': stdout");
     cli::add_quiet_option(*app, o.common);
     cli::parse(*app, argc, argv);
     if (o.list) {
