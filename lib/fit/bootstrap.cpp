@@ -11,7 +11,8 @@
 namespace cmp::fit {
 
 BootstrapResult bootstrap(const Model& model, const std::vector<double>& x, const std::vector<double>& y,
-                          const FitOptions& options, const FitResult& best, int replicas, std::uint64_t seed) {
+                          const FitOptions& options, const FitResult& best, int replicas, std::uint64_t seed,
+                          const std::vector<double>& sigma) {
   const std::size_t n = x.size(), np = best.value.size();
   FitOptions o = options;
   o.start = best.value;
@@ -19,13 +20,14 @@ BootstrapResult bootstrap(const Model& model, const std::vector<double>& x, cons
 #pragma omp parallel for schedule(dynamic)
   for (int r = 0; r < replicas; ++r) {
     Random rng(seed, static_cast<std::uint64_t>(r));
-    std::vector<double> xs(n), ys(n);
+    std::vector<double> xs(n), ys(n), ss(sigma.empty() ? 0 : n);
     for (std::size_t i = 0; i < n; ++i) {
       const auto j = rng.below(n);
       xs[i] = x[j], ys[i] = y[j];
+      if (!sigma.empty()) ss[i] = sigma[j];
     }
     try {
-      values[r] = fit(model, xs, ys, o).value;
+      values[r] = fit(model, xs, ys, o, ss).value;
     } catch (const ComputationError&) {
       // failed replica: left empty
     }

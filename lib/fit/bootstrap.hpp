@@ -19,9 +19,11 @@ struct BootstrapResult {
   std::vector<double> q975;
 };
 
-// Refits replicas resamples of (x, y) with options (the starting point set to best.value).
-// Throws cmp::ComputationError when fewer than two replicas succeed.
+// Refits replicas resamples of (x, y) (and of sigma, when given: see fit()) with options (the
+// starting point set to best.value). Throws cmp::ComputationError when fewer than two
+// replicas succeed.
 BootstrapResult bootstrap(const Model& model, const std::vector<double>& x, const std::vector<double>& y,
-                          const FitOptions& options, const FitResult& best, int replicas, std::uint64_t seed);
+                          const FitOptions& options, const FitResult& best, int replicas, std::uint64_t seed,
+                          const std::vector<double>& sigma = {});
 
 }  // namespace cmp::fit

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace cmp::fit {
 
@@ -66,7 +67,7 @@ double best_scale(const Model& m, Loss loss, const std::vector<double>& x, const
 }  // namespace
 
 FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector<double>& y_in,
-              const FitOptions& o) {
+              const FitOptions& o, const std::vector<double>& sigma_in) {
   const int np = static_cast<int>(m.params.size());
   // Which parameters are fixed, at what.
   std::vector<bool> fixed(np);
@@ -88,6 +89,10 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
   }
   if (o.loss == Loss::MaxLikelihood && !m.probability)
     throw UsageError(fmt::format("--loss ml is for 0/1 outcomes and the sigmoid model, not {}", m.name));
+  if (!sigma_in.empty() && o.loss != Loss::Linear)
+    throw UsageError(fmt::format("--sigma weights the linear loss only, not --loss {}", loss_name(o.loss)));
+  if (!sigma_in.empty() && sigma_in.size() != x_in.size())
+    throw std::invalid_argument("fit: sigma needs one value per point");
 
   // The points in the domain.
   Problem pr;
@@ -102,6 +107,11 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
     if (o.loss == Loss::Log && !(y_in[i] > 0)) { ++out_y; continue; }
     pr.x.push_back(x_in[i]);
     pr.y.push_back(y_in[i]);
+    if (!sigma_in.empty()) {
+      if (!(sigma_in[i] > 0) || !std::isfinite(sigma_in[i]))
+        throw std::invalid_argument("fit: every sigma must be positive and finite");
+      pr.weight.push_back(1.0 / sigma_in[i]);
+    }
   }
   FitResult r;
   r.model = m.name;
@@ -168,21 +178,32 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
     for (double b : {pr.lower[k], pr.upper[k]})
       if (std::isfinite(b) && std::abs(v - b) <= 1e-6 * std::max(1.0, std::abs(b))) r.at_bound = true;
   }
-  // Statistics in the loss's space (ln y for Log, y otherwise).
-  double mean = 0;
-  for (long i = 0; i < n; ++i) mean += o.loss == Loss::Log ? std::log(pr.y[i]) : pr.y[i];
-  mean /= static_cast<double>(n);
+  // Statistics in the loss's space (ln y for Log, y otherwise), of the weighted residuals.
+  auto w2 = [&](long i) { return pr.weight.empty() ? 1.0 : pr.weight[i] * pr.weight[i]; };
+  auto target = [&](long i) { return o.loss == Loss::Log ? std::log(pr.y[i]) : pr.y[i]; };
+  double mean = 0, wsum = 0;
+  for (long i = 0; i < n; ++i) mean += w2(i) * target(i), wsum += w2(i);
+  mean /= wsum;
   double rss = 0, tss = 0;
   for (long i = 0; i < n; ++i) {
     const double res = residual(m, o.loss, pr.x[i], pr.y[i], r.value.data());
-    const double dev = (o.loss == Loss::Log ? std::log(pr.y[i]) : pr.y[i]) - mean;
-    rss += res * res, tss += dev * dev;
+    const double dev = target(i) - mean;
+    rss += w2(i) * res * res, tss += w2(i) * dev * dev;
   }
+  r.weighted = !pr.weight.empty();
   r.rss = rss;
   r.r2 = tss > 0 ? 1 - rss / tss : std::numeric_limits<double>::quiet_NaN();
+  r.chi2_dof = n > nfree ? rss / static_cast<double>(n - nfree) : std::numeric_limits<double>::quiet_NaN();
   if (o.loss == Loss::MaxLikelihood) {
     r.log_likelihood = sol.log_likelihood;
     r.aic = 2.0 * nfree - 2.0 * sol.log_likelihood;
+    r.deviance = -2.0 * sol.log_likelihood;
+    double ones = 0;
+    for (double v : pr.y) ones += v;
+    const double p = ones / static_cast<double>(n);
+    r.null_log_likelihood = (ones > 0 ? ones * std::log(p) : 0.0) + (n - ones > 0 ? (n - ones) * std::log1p(-p) : 0.0);
+    r.pseudo_r2 = r.null_log_likelihood < 0 ? 1 - sol.log_likelihood / r.null_log_likelihood
+                                            : std::numeric_limits<double>::quiet_NaN();
   } else {
     r.aic = static_cast<double>(n) * std::log(rss / static_cast<double>(n)) + 2.0 * nfree;
   }

@@ -47,10 +47,19 @@ struct FitResult {
   long dropped = 0;                  // points outside the model's domain (or y <= 0 for Log)
   std::string dropped_why;           // what the dropped points violated, "" if none
   int free_parameters = 0;
-  double rss = 0;                    // residual sum of squares in the loss's space (ln y for Log)
-  double r2 = 0;                     // 1 - rss / tss in the same space
+  bool weighted = false;             // least squares weighted by 1 / sigma_i
+  double rss = 0;                    // residual sum of squares in the loss's space (ln y for Log),
+                                     // of the weighted residuals (f - y) / sigma when weighted: chi^2
+  double r2 = 0;                     // 1 - rss / tss in the same space (least squares; weighted
+                                     // residuals and weighted mean when weighted)
+  double chi2_dof = 0;               // rss / (n - k), the reduced chi^2 (residual variance when
+                                     // unweighted); NaN when n == k
   double aic = 0;                    // n ln(rss / n) + 2k (least squares); 2k - 2 ln L (ML)
-  double log_likelihood = 0;         // ML only
+  // Maximum likelihood only:
+  double log_likelihood = 0;         // ln L at the optimum
+  double null_log_likelihood = 0;    // ln L of the constant probability (the fraction of ones)
+  double deviance = 0;               // -2 ln L (the saturated model of 0/1 outcomes has ln L = 0)
+  double pseudo_r2 = 0;              // McFadden's 1 - ln L / ln L_0 (0: no better than a constant)
   int iterations = 0;                // of the best start
   int starts = 0, starts_converged = 0;
   bool at_bound = false;             // a bounded parameter ended within 1e-6 relative of its bound
@@ -59,11 +68,14 @@ struct FitResult {
 
 // Fits model to the points (x_i, y_i). Points outside the model's domain (Model::x_in_domain,
 // x <= phi_c for a fixed threshold, y <= 0 for the log loss) are dropped and counted.
+// sigma (empty, or one positive finite value per point): standard errors of y, the least
+// squares then weighted by 1 / sigma_i (curve_fit's sigma, absolute_sigma=False); only with
+// the linear loss.
 // Throws cmp::UsageError for a --fix/--free naming no parameter of the model or a loss the
-// model does not support; cmp::ComputationError when no point is left, fewer points than
-// free parameters remain, or no starting point converges.
+// model does not support (sigma with another loss than linear); cmp::ComputationError when no
+// point is left, fewer points than free parameters remain, or no starting point converges.
 FitResult fit(const Model& model, const std::vector<double>& x, const std::vector<double>& y,
-              const FitOptions& options);
+              const FitOptions& options, const std::vector<double>& sigma = {});
 
 // Residual of one point in the loss's space: f - y, ln f - ln y, or y - f for MaxLikelihood.
 double residual(const Model& model, Loss loss, double x, double y, const double* p);

@@ -72,6 +72,9 @@ void model_term_gradient(const Model& m, Loss loss, double x, const double* p, d
   for (std::size_t k = 0; k < m.params.size(); ++k) g[k] /= f;
 }
 
+// The weight 1 / sigma_i of point i (1 when the problem is unweighted).
+double weight(const Problem& pr, std::size_t i) { return pr.weight.empty() ? 1.0 : pr.weight[i]; }
+
 struct Context {
   const Problem* problem;
   std::vector<Transform> transforms;  // per free parameter
@@ -91,7 +94,7 @@ int residuals(const gsl_vector* u, void* data, gsl_vector* r) {
   const auto& pr = *c.problem;
   const double huge = kHuge / std::sqrt(static_cast<double>(pr.x.size()));
   for (std::size_t i = 0; i < pr.x.size(); ++i) {
-    const double ri = model_term(*pr.model, pr.loss, pr.x[i], c.p.data()) - c.target[i];
+    const double ri = (model_term(*pr.model, pr.loss, pr.x[i], c.p.data()) - c.target[i]) * weight(pr, i);
     gsl_vector_set(r, i, std::isfinite(ri) ? ri : huge);
   }
   return GSL_SUCCESS;
@@ -104,7 +107,7 @@ int jacobian(const gsl_vector* u, void* data, gsl_matrix* J) {
   for (std::size_t i = 0; i < pr.x.size(); ++i) {
     model_term_gradient(*pr.model, pr.loss, pr.x[i], c.p.data(), c.grad.data());
     for (std::size_t k = 0; k < c.transforms.size(); ++k) {
-      const double g = c.grad[pr.free[k]] * c.transforms[k].dp(gsl_vector_get(u, k));
+      const double g = c.grad[pr.free[k]] * c.transforms[k].dp(gsl_vector_get(u, k)) * weight(pr, i);
       gsl_matrix_set(J, i, k, std::isfinite(g) ? g : 0.0);
     }
   }
@@ -218,7 +221,7 @@ Solution solve_least_squares(const Problem& pr) {
     if (k == 0) {
       a.cost = 0;
       for (long i = 0; i < n; ++i) {
-        const double r = residual(*pr.model, pr.loss, pr.x[i], pr.y[i], a.p.data());
+        const double r = residual(*pr.model, pr.loss, pr.x[i], pr.y[i], a.p.data()) * weight(pr, i);
         a.cost += r * r;
       }
     }
@@ -235,7 +238,7 @@ Solution solve_least_squares(const Problem& pr) {
   std::vector<double> grad(s.p.size());
   for (long i = 0; i < n; ++i) {
     model_term_gradient(*pr.model, pr.loss, pr.x[i], s.p.data(), grad.data());
-    for (int j = 0; j < k; ++j) J(i, j) = grad[pr.free[j]];
+    for (int j = 0; j < k; ++j) J(i, j) = grad[pr.free[j]] * weight(pr, static_cast<std::size_t>(i));
   }
   if (n > k) {
     s.covariance = scaled_covariance(J, pr.free, static_cast<int>(s.p.size()), best.cost / static_cast<double>(n - k));

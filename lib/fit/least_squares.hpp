@@ -11,7 +11,9 @@
 // reported by FitResult::at_bound. The covariance is computed in the original parameters
 // from the Jacobian at the optimum, cov = (J^T J)^+ rss / (n - k), with the pseudo-inverse
 // cut-off of scipy's curve_fit (singular values below eps max(n, k) s_max dropped), so that
-// an interior optimum gives curve_fit's pcov (absolute_sigma=False).
+// an interior optimum gives curve_fit's pcov (absolute_sigma=False). With weights 1/sigma_i
+// (Problem::weight) every residual and Jacobian row is multiplied by its weight, as curve_fit
+// does given sigma, and rss is then chi^2.
 #include "fit/problem.hpp"
 
 namespace cmp::fit {

@@ -75,8 +75,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "kc-classical";
-    k.x_column = "porosity";
-    k.y_column = "permeability";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
+    k.title = "{/Symbol k} = C {/Symbol f}^3 / (1 - {/Symbol f})^2";
     k.formula = "C x^3 / (1 - x)^2";
     k.source = "classical Kozeny-Carman (thesis L801, Fig. S5.5 A-B)";
     k.params = {C};
@@ -91,8 +92,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "kc-percolation";
-    k.x_column = "porosity";
-    k.y_column = "permeability";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
+    k.title = "{/Symbol k} = C ({/Symbol f} - {/Symbol f}_c)^{{/Symbol g} + 0.76} {/Symbol f}^2 / (1 - {/Symbol f})^2";
     k.formula = "C (x - phi_c)^(gamma + 0.76) x^2 / (1 - x)^2";
     k.source = "thesis Eq. 5.8, Table S5.1 model i)";
     k.params = {C, phi_c, {"gamma", "exponent of the reduced porosity (0.76 comes from tau_H^-2)", 1.0}};
@@ -114,8 +116,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "kc-fixed";
-    k.x_column = "porosity";
-    k.y_column = "permeability";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
+    k.title = "{/Symbol k} = C ({/Symbol f} - {/Symbol f}_c)^{2.52} {/Symbol f}^2 / (1 - {/Symbol f})^2";
     k.formula = "C (x - phi_c)^2.52 x^2 / (1 - x)^2";
     k.source = "thesis Eq. 2.52 / Table S5.1 model ii) (gamma = 1.76, n_c ~ dphi^1.76 of 5.5.5)";
     k.params = {C, phi_c};
@@ -141,8 +144,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "power";
-    k.x_column = "porosity";
-    k.y_column = "permeability";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
+    k.title = "{/Symbol k} = C ({/Symbol f} - {/Symbol f}_c)^e";
     k.formula = "C (x - phi_c)^e";
     k.source = "power-law ansatz kappa ~ dphi^e (thesis L801, Table S5.1 model iii)";
     k.params = {C, phi_c, {"e", "exponent", 2.0}};
@@ -160,8 +164,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "hydraulic-radius";
-    k.x_column = "porosity";
-    k.y_column = "hydraulic_radius";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"rh_sites_d0", "hydraulic_radius"};
+    k.title = "R_h = C {/Symbol f} / (1 - {/Symbol f})";
     k.formula = "C x / (1 - x)";
     k.source = "R_h ~ phi / (1 - phi) (thesis Fig. 5.3, Eq. 5.6)";
     k.params = {C};
@@ -176,8 +181,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "tortuosity";
-    k.x_column = "porosity";
-    k.y_column = "tortuosity";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"tortuosity"};
+    k.title = "{/Symbol t}_H = C ({/Symbol f} - {/Symbol f}_c)^e";
     k.formula = "C (x - phi_c)^e, e = -0.38 unless freed (--free e)";
     k.source = "tau_H ~ dphi^-0.38 (thesis 5.5.4, Fig. 5.4 B, Table S5.1)";
     Parameter e{"e", "exponent nu (1 - D) = -0.38 of percolation theory", kTortuosityExponent};
@@ -197,8 +203,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "threshold";
-    k.x_column = "delta";
-    k.y_column = "phi_c";
+    k.x_columns = {"delta"};
+    k.y_columns = {"phi_c"};
+    k.title = "{/Symbol f}_c({/Symbol d}) = {/Symbol f}_c^* + A {/Symbol d}^{/Symbol b}";
     k.formula = "phi_c_star + A x^beta";
     k.source = "phi_c(delta) - phi_c* = A delta^beta (thesis 5.5.6, Fig. 5.2 D, Table S5.1)";
     k.params = {{"phi_c_star", "threshold in the continuum limit x -> 0", 0.05},
@@ -234,8 +241,9 @@ std::vector<Model> make_models() {
   {
     Model k;
     k.name = "sigmoid";
-    k.x_column = "porosity";
-    k.y_column = "percolates";
+    k.x_columns = {"porosity"};
+    k.y_columns = {"percolates", "probability"};
+    k.title = "P({/Symbol f}) = 1 / (1 + exp(-({/Symbol f} - {/Symbol f}_c) / w))";
     k.formula = "1 / (1 + exp(-(x - phi_c) / width))";
     k.source = "percolation probability, phi_c where it is 1/2 (thesis 5.5.6, Fig. 5.2 C)";
     k.params = {{"phi_c", "x where the probability is 1/2", 0.1},

@@ -26,7 +26,11 @@ struct Model {
   std::string name;     // "kc-percolation"
   std::string formula;  // "C (x - phi_c)^(gamma + 0.76) x^2 / (1 - x)^2"
   std::string source;   // where in the thesis
-  std::string x_column, y_column;  // default CSV columns (percolate / lbflow names)
+  std::string title;    // the law as a figure title, gnuplot enhanced text ({/Symbol f} is phi)
+  // Default CSV columns (the names percolate and lbflow write), first one present wins: e.g.
+  // the sigmoid takes y from `percolates` (0/1 per packing) or else `probability` (percolate
+  // sweep's fraction per bin).
+  std::vector<std::string> x_columns, y_columns;
   std::vector<Parameter> params;
   // f(x; p); p has params.size() entries.
   std::function<double(double x, const double* p)> value;

@@ -5,126 +5,266 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
+#include <map>
 #include <mutex>
+#include <memory>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace cmp::fit {
+extern char** environ;
 
-namespace fs = std::filesystem;
+namespace cmp::fit {
 
 namespace {
 
-// gnuplot single-quoted string: a quote is doubled.
+// gnuplot single-quoted string: a quote is doubled; a line break becomes gnuplot's "\n".
 std::string quoted(const std::string& s) {
   std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  for (char c : s) {
+    if (c == '\'') q += "''";
+    else if (c == '\n') q += "'.\"\\n\".'";
+    else q += c;
+  }
   return q + "'";
 }
 
-// POSIX shell single-quoted word.
-std::string shell_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+struct FileCloser {
+  void operator()(std::FILE* f) const { if (f) std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+// What a finished gnuplot run gave.
+struct Run {
+  int status = 0;          // waitpid status
+  std::string out, err;    // its standard output and error
+};
+
+std::string read_all(std::FILE* f) {
+  std::string s;
+  std::rewind(f);
+  char buf[4096];
+  std::size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, got);
+  return s;
 }
 
-int run(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return status == -1 ? -1 : (WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+// Runs gnuplot with args, script on its stdin; stderr into an anonymous file (no deadlock
+// between two pipes), stdout read through a pipe until EOF, then waitpid.
+Run run_gnuplot(const std::vector<std::string>& args, const std::string& script) {
+  File in(std::tmpfile()), err(std::tmpfile());
+  if (!in || !err) throw ComputationError(std::string("cannot run gnuplot: ") + std::strerror(errno));
+  std::fwrite(script.data(), 1, script.size(), in.get());
+  std::fflush(in.get());
+  std::rewind(in.get());
+  int out[2];
+  if (::pipe(out) != 0) throw ComputationError(std::string("cannot run gnuplot: ") + std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fileno(in.get()), 0);
+  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, fileno(err.get()), 2);
+  posix_spawn_file_actions_addclose(&actions, out[0]);
+  std::vector<char*> argv;
+  std::vector<std::string> owned{"gnuplot"};
+  owned.insert(owned.end(), args.begin(), args.end());
+  for (auto& a : owned) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(out[1]);
+  if (spawned != 0) {
+    ::close(out[0]);
+    throw ComputationError(fmt::format("--plot needs gnuplot (Debian: gnuplot-nox): {}", std::strerror(spawned)));
+  }
+  Run r;
+  char buf[65536];
+  for (;;) {
+    const ssize_t got = ::read(out[0], buf, sizeof buf);
+    if (got > 0) r.out.append(buf, static_cast<std::size_t>(got));
+    else if (got == 0 || errno != EINTR) break;
+  }
+  ::close(out[0]);
+  while (::waitpid(pid, &r.status, 0) < 0 && errno == EINTR) {
+  }
+  std::fflush(err.get());
+  r.err = read_all(err.get());
+  return r;
 }
 
-}  // namespace
+bool succeeded(const Run& r) { return WIFEXITED(r.status) && WEXITSTATUS(r.status) == 0; }
+
+// gnuplot's messages on one line (the last few hundred characters).
+std::string messages(const std::string& err) {
+  std::string s;
+  for (char c : err) s += c == '\n' ? std::string(" | ") : std::string(1, c);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '|')) s.pop_back();
+  return s.size() > 400 ? "..." + s.substr(s.size() - 400) : s;
+}
 
 std::string png_terminal() {
   static std::once_flag once;
   static std::string terminal;
   std::call_once(once, [] {
-    if (run("gnuplot -e 'set terminal pngcairo' </dev/null >/dev/null 2>&1") == 0) terminal = "pngcairo";
-    else if (run("gnuplot -e 'set terminal png' </dev/null >/dev/null 2>&1") == 0) terminal = "png";
+    terminal = succeeded(run_gnuplot({"-e", "set terminal pngcairo"}, "")) ? "pngcairo" : "png";
   });
-  if (terminal.empty())
-    throw ComputationError("--plot needs gnuplot with the pngcairo or png terminal (Debian: gnuplot-nox)");
   return terminal;
 }
 
-std::string render_plot(const std::string& path, const PlotSpec& spec) {
-  const std::string terminal = png_terminal();
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string templ = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
-  std::vector<char> buf(templ.begin(), templ.end());
-  buf.push_back('\0');
-  if (!::mkdtemp(buf.data())) throw InputError(path, 0, "cannot write the plot here (folder missing or read-only)");
-  const fs::path work(buf.data());
-  struct Cleanup {
-    fs::path p;
-    ~Cleanup() { std::error_code ec; fs::remove_all(p, ec); }
-  } cleanup{work};
+const char* kPalette[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000", "#f0e442"};
+constexpr int kColours = 8;
 
-  {
-    std::ofstream data(work / "data.dat");
-    for (std::size_t i = 0; i < spec.x.size(); ++i)
-      data << io::format_number(spec.x[i]) << ' ' << io::format_number(spec.y[i]) << '\n';
-    std::ofstream curve(work / "curve.dat");
-    const int samples = 400;
-    for (int s = 0; s <= samples; ++s) {
-      const double x = spec.curve_from + (spec.curve_to - spec.curve_from) * s / samples;
-      curve << io::format_number(x);
-      for (const auto& c : spec.curves) {
-        const double f = c.model->value(x, c.p.data());
-        curve << ' ' << (std::isfinite(f) && (!spec.log_y || f > 0) ? io::format_number(f) : std::string("NaN"));
-      }
-      curve << '\n';
+std::string number(double v) { return std::isfinite(v) ? io::format_number(v) : std::string("NaN"); }
+
+}  // namespace
+
+std::optional<PlotFormat> plot_format(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return std::nullopt;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "png") return PlotFormat::Png;
+  if (ext == "svg") return PlotFormat::Svg;
+  if (ext == "pdf") return PlotFormat::Pdf;
+  return std::nullopt;
+}
+
+std::string enhanced_literal(const std::string& text) {
+  std::string s;
+  for (char c : text) {
+    if (std::strchr("_^@&~{}", c)) s += '\\';
+    s += c;
+  }
+  return s;
+}
+
+std::string symbol(const std::string& name) {
+  static const std::map<std::string, std::string> symbols{
+      {"phi_c", "{/Symbol f}_c"}, {"phi_c_star", "{/Symbol f}_c^*"}, {"gamma", "{/Symbol g}"},
+      {"beta", "{/Symbol b}"},     {"width", "w"},                   {"porosity", "{/Symbol f}"},
+      {"delta", "{/Symbol d}"},    {"C", "C"},                       {"A", "A"},
+      {"e", "e"},                 {"particles", "N"},               {"scale", "s"}};
+  const auto it = symbols.find(name);
+  return it == symbols.end() ? enhanced_literal(name) : it->second;
+}
+
+std::string axis_label(const std::string& column) {
+  static const std::map<std::string, std::string> labels{
+      {"porosity", "porosity {/Symbol f}"},
+      {"porosity_voxels", "porosity {/Symbol f} (voxels)"},
+      {"delta", "voxel side {/Symbol d} / D_0"},
+      {"scale", "radius scale s"},
+      {"particles", "particles N"},
+      {"percolates", "fraction percolating"},
+      {"probability", "percolation probability P"},
+      {"phi_c", "percolation threshold {/Symbol f}_c"},
+      {"width", "transition width w"},
+      {"permeability_delta2", "permeability {/Symbol k} / {/Symbol d}^2"},
+      {"permeability_d02", "permeability {/Symbol k} / D_0^2"},
+      {"permeability", "permeability {/Symbol k}"},
+      {"rh_sites_d0", "hydraulic radius R_h / D_0"},
+      {"rh_faces_d0", "hydraulic radius R_h / D_0 (faces)"},
+      {"rh_sites_delta", "hydraulic radius R_h / {/Symbol d}"},
+      {"rh_faces_delta", "hydraulic radius R_h / {/Symbol d} (faces)"},
+      {"hydraulic_radius", "hydraulic radius R_h"},
+      {"tortuosity", "hydraulic tortuosity {/Symbol t}_H"}};
+  const auto it = labels.find(column);
+  return it == labels.end() ? enhanced_literal(column) : it->second;
+}
+
+PlotPoints binned_outcomes(const std::vector<double>& x, const std::vector<double>& y, int bins) {
+  PlotPoints p;
+  if (x.empty() || bins < 1) return p;
+  const double lo = *std::min_element(x.begin(), x.end()), hi = *std::max_element(x.begin(), x.end());
+  const double width = hi > lo ? (hi - lo) / bins : 1.0;
+  std::vector<double> sum_x(bins), ones(bins), count(bins);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const int b = std::clamp(static_cast<int>((x[i] - lo) / width), 0, bins - 1);
+    sum_x[b] += x[i], ones[b] += y[i], count[b] += 1;
+  }
+  for (int b = 0; b < bins; ++b) {
+    if (count[b] == 0) continue;
+    const double n = count[b], f = ones[b] / n, z2 = 1.0;  // z = 1: 68 %
+    const double centre = (f + z2 / (2 * n)) / (1 + z2 / n);
+    const double half = std::sqrt(f * (1 - f) / n + z2 / (4 * n * n)) / (1 + z2 / n);
+    p.x.push_back(sum_x[b] / n);
+    p.y.push_back(f);
+    p.low.push_back(std::max(0.0, centre - half));
+    p.high.push_back(std::min(1.0, centre + half));
+  }
+  return p;
+}
+
+std::string render_plot(PlotFormat format, const PlotSpec& spec) {
+  std::string s;
+  switch (format) {
+    case PlotFormat::Png: {
+      const std::string t = png_terminal();
+      s += "set terminal " + t + " size 960,720" + (t == "pngcairo" ? " enhanced font 'Sans,13'" : " enhanced") + "\n";
+      break;
     }
+    case PlotFormat::Svg: s += "set terminal svg size 960,720 enhanced font 'Sans,13' background rgb 'white'\n"; break;
+    case PlotFormat::Pdf: s += "set terminal pdfcairo size 6.4in,4.8in enhanced font 'Sans,11'\n"; break;
   }
-  const fs::path png = work / "plot.png";
-  {
-    std::ofstream gp(work / "plot.gp");
-    gp << "set terminal " << terminal << " size 900,720" << (terminal == "pngcairo" ? " enhanced font ',12'" : "")
-       << "\nset output " << quoted(png.string()) << "\nset xlabel " << quoted(spec.x_label) << " noenhanced"
-       << "\nset ylabel " << quoted(spec.y_label) << " noenhanced" << "\nset title " << quoted(spec.title) << " noenhanced"
-       << "\nset key below left Left reverse noenhanced\nset grid\nset datafile missing 'NaN'\n";
-    if (spec.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
-    else gp << "set offsets 0, 0, graph 0.04, graph 0.04\n";  // points on 0 and 1 stay visible
-    gp << "plot " << quoted((work / "data.dat").string()) << " using 1:2 with points pt 7 ps 0.7 lc rgb '#1f77b4' title 'data'";
-    const char* colours[] = {"#d62728", "#2ca02c", "#ff7f0e"};
-    for (std::size_t c = 0; c < spec.curves.size(); ++c)
-      gp << ", " << quoted((work / "curve.dat").string()) << " using 1:" << c + 2 << " with lines lw 2 dt "
-         << (c == 0 ? 1 : 2) << " lc rgb '" << colours[c % 3] << "' title " << quoted(spec.curves[c].title);
-    gp << "\n";
+  s += "set encoding utf8\nset xlabel " + quoted(spec.x_label) + "\nset ylabel " + quoted(spec.y_label) +
+       "\nset title " + quoted(spec.title) + "\nset key below left Left reverse samplen 2\nset grid\n" +
+       "set datafile missing 'NaN'\nset bars small\n";
+  if (spec.log_y) s += "set logscale y\nset format y '10^{%L}'\n";
+  if (spec.probability) s += "set yrange [-0.05:1.05]\n";
+  else if (!spec.log_y) s += "set offsets 0, 0, graph 0.04, graph 0.04\n";
+  for (std::size_t k = 0; k < spec.points.size(); ++k) {
+    const auto& pts = spec.points[k];
+    s += fmt::format("$points{} << EOD\n", k);
+    for (std::size_t i = 0; i < pts.x.size(); ++i) {
+      s += number(pts.x[i]) + ' ' + number(pts.y[i]);
+      if (!pts.low.empty()) s += ' ' + number(pts.low[i]) + ' ' + number(pts.high[i]);
+      s += '\n';
+    }
+    s += "EOD\n";
   }
-  const std::string command =
-      fmt::format("gnuplot {} >{} 2>&1", shell_quoted((work / "plot.gp").string()),
-                  shell_quoted((work / "gnuplot.log").string()));
-  if (run(command) != 0 || !fs::exists(png)) {
-    std::ifstream log(work / "gnuplot.log");
-    std::string line, all;
-    while (std::getline(log, line)) all += (all.empty() ? "" : " | ") + line;
-    throw ComputationError("gnuplot failed: " + all);
+  for (std::size_t c = 0; c < spec.curves.size(); ++c) {
+    const auto& curve = spec.curves[c];
+    s += fmt::format("$curve{} << EOD\n", c);
+    const int samples = 400;
+    for (int i = 0; i <= samples; ++i) {
+      const double x = curve.from + (curve.to - curve.from) * i / samples;
+      const double f = curve.model->value(x, curve.p.data());
+      s += number(x) + ' ' + (std::isfinite(f) && (!spec.log_y || f > 0) ? number(f) : std::string("NaN")) + '\n';
+    }
+    s += "EOD\n";
   }
-  // Keep the PNG as a hidden file beside the target until commit.
-  const std::string temp = (dir / ("." + target.filename().string() + ".tmp.png")).string();
-  std::error_code ec;
-  fs::rename(png, temp, ec);
-  if (ec) throw InputError(path, 0, "cannot write the plot here: " + ec.message());
-  return temp;
-}
-
-void commit_plot(const std::string& temp, const std::string& path) {
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) throw InputError(path, 0, "cannot write the plot: " + ec.message());
-}
-
-void discard_plot(const std::string& temp) {
-  std::error_code ec;
-  fs::remove(temp, ec);
+  std::vector<std::string> items;
+  for (std::size_t k = 0; k < spec.points.size(); ++k) {
+    const auto& pts = spec.points[k];
+    const std::string colour = kPalette[k % kColours];
+    const std::string title = pts.title.empty() ? "notitle" : "title " + quoted(pts.title);
+    items.push_back(pts.low.empty()
+                        ? fmt::format("$points{} using 1:2 with points pt 7 ps 0.6 lc rgb '{}' {}", k, colour, title)
+                        : fmt::format("$points{} using 1:2:3:4 with yerrorbars pt 7 ps 0.8 lc rgb '{}' {}", k, colour, title));
+  }
+  for (std::size_t c = 0; c < spec.curves.size(); ++c) {
+    const auto& curve = spec.curves[c];
+    items.push_back(fmt::format("$curve{} using 1:2 with lines lw 2 dt {} lc rgb '{}' title {}", c, curve.dashed ? 2 : 1,
+                                kPalette[curve.colour % kColours], quoted(curve.title)));
+  }
+  s += "plot ";
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", \\\n     " : "") + items[i];
+  s += "\n";
+  const Run r = run_gnuplot({}, s);
+  if (WIFSIGNALED(r.status))
+    throw ComputationError(fmt::format("gnuplot was killed by signal {} ({}) while drawing the plot",
+                                       WTERMSIG(r.status), ::strsignal(WTERMSIG(r.status))));
+  if (!succeeded(r) || r.out.empty())
+    throw ComputationError(fmt::format("gnuplot failed{}: {}", WIFEXITED(r.status) ? fmt::format(" (exit status {})", WEXITSTATUS(r.status)) : "",
+                                       r.err.empty() ? "no figure on its output" : messages(r.err)));
+  return r.out;
 }
 
 }  // namespace cmp::fit

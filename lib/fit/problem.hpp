@@ -12,6 +12,7 @@ struct Problem {
   const Model* model = nullptr;
   Loss loss = Loss::Linear;
   std::vector<double> x, y;                 // points in the domain
+  std::vector<double> weight;               // 1 / sigma_i per point (least squares); empty: all 1
   std::vector<int> free;                    // indices of the fitted parameters
   std::vector<double> lower, upper;         // effective bounds of every parameter
   std::vector<std::vector<double>> starts;  // full parameter vectors (fixed values included)

@@ -108,6 +108,10 @@ def data(kind, n, seed):
     if kind == "probability":
         x = np.linspace(0.08, 0.22, 29)
         return x, np.clip(sigmoid(x, 0.141, 0.01) + rng.normal(0, 0.04, x.size), 0, 1)
+    if kind == "probability_weighted":  # binned fractions of 40 packings, binomial errors
+        x = np.linspace(0.10, 0.18, 17)
+        p = rng.binomial(40, sigmoid(x, 0.141, 0.01)) / 40
+        return x, p, np.sqrt(np.maximum(p * (1 - p), 0.02) / 40)
     raise ValueError(kind)
 
 
@@ -131,12 +135,13 @@ CASES = {
     "hydraulic_radius_log": ("rh", "hydraulic-radius", "log", [], hydraulic, hydraulic_jac, [1.0], ["C"]),
     "threshold_linear": ("threshold", "threshold", "linear", [], threshold, threshold_jac, [0.035, 3.67, 1.1], ["phi_c_star", "A", "beta"]),
     "sigmoid_linear": ("probability", "sigmoid", "linear", [], sigmoid, sigmoid_jac, [0.141, 0.01], ["phi_c", "width"]),
+    "sigmoid_weighted_linear": ("probability_weighted", "sigmoid", "linear", ["--sigma", "s"], sigmoid, sigmoid_jac, [0.141, 0.01], ["phi_c", "width"]),
 }
 
 
-def scipy_fit(f, jac, x, y, p0, loss):
+def scipy_fit(f, jac, x, y, p0, loss, sigma=None):
     from scipy.optimize import curve_fit
-    kw = dict(p0=p0, ftol=1e-14, xtol=1e-14, gtol=1e-14, maxfev=100000)
+    kw = dict(p0=p0, ftol=1e-14, xtol=1e-14, gtol=1e-14, maxfev=100000, sigma=sigma)
     if loss == "log":
         popt, pcov = curve_fit(lambda x, *p: np.log(f(x, *p)), x, np.log(y),
                                jac=lambda x, *p: jac(x, *p) / f(x, *p)[:, None], **kw)
@@ -150,16 +155,17 @@ def run(case, kcfit, work):
     import numpy
     np = numpy
     kind, model, loss, extra, f, jac, p0, names = CASES[case]
-    x, y = data(kind, 150, seed=sum(map(ord, case)))
+    x, y, *sigma = data(kind, 150, seed=sum(map(ord, case)))
+    sigma = sigma[0] if sigma else None
     path = f"{work}/{case}.csv"
     with open(path, "w") as fh:
-        fh.write("# case=" + case + "\nx,y\n")
-        for a, b in zip(x, y):
-            fh.write(f"{a!r},{b!r}\n")
+        fh.write("# case=" + case + ("\nx,y,s\n" if sigma is not None else "\nx,y\n"))
+        for i, (a, b) in enumerate(zip(x, y)):
+            fh.write(f"{a!r},{b!r}" + (f",{sigma[i]!r}\n" if sigma is not None else "\n"))
     out = subprocess.run([kcfit, path, "--model", model, "--x", "x", "--y", "y", "--loss", loss, "-q", *extra],
                          check=True, capture_output=True, text=True).stdout
     rows = {r["parameter"]: r for r in csv.DictReader(l for l in out.splitlines() if not l.startswith("#"))}
-    popt, perr = scipy_fit(f, jac, x, y, p0, loss)
+    popt, perr = scipy_fit(f, jac, x, y, p0, loss, sigma)
     bad = []
     for k, name in enumerate(names):
         v, e = float(rows[name]["value"]), float(rows[name]["stderr"])

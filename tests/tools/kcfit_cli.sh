@@ -22,7 +22,8 @@ near() { awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) d = 
 
 case_help() {
   "$kcfit" --help >help.txt || fail "--help"
-  for opt in --model --x --y --loss --fix --free --plot --plot-kc --bootstrap --seed --threads --list-models; do
+  for opt in --model --x --y --sigma --loss --where --group-by --fix --free --plot --xlabel --ylabel --plot-kc \
+    --bootstrap --seed --threads --list-models; do
     grep -q -- "$opt" help.txt || fail "--help lacks $opt"
   done
   "$kcfit" --version | grep -Eq "^kcfit [0-9]" || fail "--version"
@@ -34,10 +35,17 @@ case_list_models() {
   done
   grep -q "gamma + 0.76" models.txt || fail "Eq. 5.8 formula missing"
   grep -q "fixed at -0.38 unless --free e" models.txt || fail "tortuosity exponent note missing"
+  # The default columns are those percolate and lbflow write.
+  grep -q "default columns --x porosity --y percolates or probability" models.txt || fail "sigmoid columns"
+  grep -q "default columns --x delta --y phi_c" models.txt || fail "threshold columns"
+  grep -q "default columns --x porosity --y permeability_delta2 or permeability_d02 or permeability" models.txt ||
+    fail "permeability columns"
+  grep -q "default columns --x porosity --y rh_sites_d0 or hydraulic_radius" models.txt || fail "R_h columns"
+  grep -q "^    permeability_delta2  permeability in units of delta^2" models.txt || fail "column meanings"
 }
 case_fit_csv() {
   "$kcfit" "$flow" --model kc-percolation --x porosity --y permeability --loss log >fit.csv 2>err.txt || fail "fit"
-  grep -q "^kcfit: kc-percolation (log loss), 120 points: C = .*gamma = .*R^2 = 0.99" err.txt || fail "summary: $(cat err.txt)"
+  grep -q "^kcfit: kc-percolation (log loss), 120 points: C = .*gamma = .*R^2 (ln y) = 0.99.*chi^2/dof = " err.txt || fail "summary: $(cat err.txt)"
   grep -q "^parameter,value,stderr,fixed,cov_C,cov_phi_c,cov_gamma$" fit.csv || fail "header: $(cat fit.csv)"
   grep -q "^# input.synthetic=1$" fit.csv || fail "input provenance not carried"
   grep -q "^# provenance=kcfit .*--model kc-percolation" fit.csv || fail "own provenance"
@@ -111,7 +119,7 @@ case_bad_input() {
   expect_error 2 "nan.csv:4: .*abc" "$kcfit" nan.csv --model power -o out.csv
   expect_error 2 "unknown model 'kozeny'" "$kcfit" in.csv --model kozeny -o out.csv
   expect_error 2 "--fix: expected name=value" "$kcfit" in.csv --model power --fix phi_c -o out.csv
-  expect_error 2 "--fix: expected name=value" "$kcfit" in.csv --model power --fix phi_c=abc -o out.csv
+  expect_error 2 "--fix phi_c=abc: the value 'abc' is not a number" "$kcfit" in.csv --model power --fix phi_c=abc -o out.csv
   expect_error 2 "--fix: expected name=value" "$kcfit" in.csv --model power --fix =0.1 -o out.csv
   expect_error 2 "--fix: model power has no parameter 'gamma'" "$kcfit" in.csv --model power --fix gamma=1 -o out.csv
   expect_error 2 "--loss: unknown loss" "$kcfit" in.csv --model power --loss cubic -o out.csv
@@ -131,6 +139,198 @@ case_fit_failures() {
   expect_error 1 "did not converge" "$kcfit" "$flow" --model kc-percolation --loss log --max-iter 1 -o out.csv
   printf 'porosity,percolates\n0.1,0\n0.11,0\n0.15,1\n0.16,1\n' >sep.csv
   expect_error 1 "perfectly separated" "$kcfit" sep.csv --model sigmoid -o out.csv --plot out.png
+}
+
+# percolate's per-run table (the column contract shared with percolate): PACKINGS packings
+# per delta at 21 scales each, percolating (a Bernoulli draw, deterministic LCG) with
+# P = sigmoid((porosity - phi_c(delta)) / 0.012), phi_c(delta) = 0.035 + 3.67 delta^1.1.
+percolate_runs() {
+  awk -v packings="${1:-30}" -v seed="${2:-1}" 'BEGIN {
+    print "# tool=percolate (synthetic, for the kcfit tests)"
+    print "file,particles,delta,scale,porosity,porosity_voxels,percolates"
+    s = seed; split("0.03 0.04 0.05 0.06 0.07", d, " ")
+    for (k = 1; k <= 5; k++) {
+      pc = 0.035 + 3.67 * exp(1.1 * log(d[k]))
+      for (j = 0; j < packings; j++) for (i = 0; i <= 20; i++) {
+        phi = 0.36 - 0.3 * i / 20 + 0.004 * ((j * 7) % 5)
+        s = (s * 1103515245 + 12345) % 2147483648; u = s / 2147483648
+        p = 1 / (1 + exp(-(phi - pc) / 0.012))
+        printf "jam_%d.xyz,50,%s,%.2f,%.6f,%.6f,%d\n", j, d[k], 1 + 0.02 * i, phi, phi + 0.01, (u < p)
+      }
+    }
+  }'
+}
+# percolate sweep's table (the contract): per delta, bins of porosity with the fraction
+# percolating and its binomial error, zero where every packing percolates or none.
+percolate_sweep_table() {
+  awk 'BEGIN {
+    print "# tool=percolate sweep (synthetic, for the kcfit tests)"
+    print "particles,delta,scale,porosity,porosity_low,porosity_high,packings,percolating,probability,probability_error"
+    split("0.03 0.04 0.05", d, " ")
+    for (k = 1; k <= 3; k++) {
+      pc = 0.035 + 3.67 * exp(1.1 * log(d[k]))
+      for (i = 0; i < 12; i++) {
+        phi = 0.06 + 0.025 * i; n = 40
+        m = int(n / (1 + exp(-(phi - pc) / 0.012)) + 0.5); p = m / n
+        printf "50,%s,1,%.4f,%.4f,%.4f,%d,%d,%.6f,%.6f\n", d[k], phi, phi - 0.0125, phi + 0.0125, n, m, p, sqrt(p * (1 - p) / n)
+      }
+    }
+  }'
+}
+
+case_percolate_chain() {
+  # percolate -> kcfit -> kcfit with the default columns and no awk in between.
+  percolate_runs 30 >perc.csv
+  "$kcfit" perc.csv --model sigmoid --group-by delta -o fits.csv 2>err.txt || fail "sigmoid --group-by: $(cat err.txt)"
+  grep -q "^# loss=ml$" fits.csv || fail "0/1 percolates should give maximum likelihood"
+  grep -q "^# group_by=delta$" fits.csv || fail "group_by meta"
+  grep -q "^delta,n,dropped,phi_c,phi_c_error,width,width_error,log_likelihood,null_log_likelihood,deviance,pseudo_r2,aic,at_bound$" fits.csv ||
+    fail "grouped header: $(grep -v '^#' fits.csv | head -1)"
+  [ "$(grep -vc '^#' fits.csv)" -eq 6 ] || fail "one row per delta: $(cat fits.csv)"
+  grep -q "^0.04,630,0,0.14" fits.csv || fail "phi_c(0.04): $(grep '^0.04' fits.csv)"
+  [ "$(grep -c '^kcfit: delta=0.0[3-7]: sigmoid (ml loss), 630 points' err.txt)" -eq 5 ] || fail "summaries: $(cat err.txt)"
+  grep -q "warning" err.txt && fail "warned although grouped: $(cat err.txt)"
+  "$kcfit" fits.csv --model threshold -o thr.csv 2>err.txt || fail "threshold on kcfit's output: $(cat err.txt)"
+  grep -q "^# sigma=phi_c_error$" thr.csv || fail "phi_c_error not used as sigma"
+  near "$(value thr.csv phi_c_star)" 0.035 0.03 || fail "phi_c_star $(value thr.csv phi_c_star)"
+  # The same data through --where: one fit, the same numbers as the group's row.
+  "$kcfit" perc.csv --model sigmoid --where delta=0.040 -q -o one.csv || fail "--where"
+  grep -q "^# n=630$" one.csv || fail "--where delta=0.040 kept $(grep '^# n=' one.csv)"
+  [ "$(value one.csv phi_c)" = "$(grep '^0.04,' fits.csv | cut -d, -f4)" ] || fail "--where and --group-by differ"
+  "$kcfit" perc.csv --model sigmoid --where "delta>0.035" --where "delta<0.065" --group-by delta -q -o three.csv || fail "<, >"
+  [ "$(grep -vc '^#' three.csv)" -eq 4 ] || fail "--where delta>0.035 delta<0.065: $(cat three.csv)"
+  # Two groupings at once: the group columns first, in the order given.
+  "$kcfit" perc.csv --model sigmoid --group-by delta,particles -q -o two.csv || fail "two group columns"
+  grep -q "^delta,particles,n," two.csv || fail "two group columns header"
+}
+case_percolate_sweep() {
+  # percolate sweep's binned table: probability, weighted by probability_error (zeros replaced).
+  percolate_sweep_table >sweep.csv
+  "$kcfit" sweep.csv --model sigmoid --group-by delta -o fits.csv 2>err.txt || fail "sweep: $(cat err.txt)"
+  grep -q "^# y=probability$" fits.csv || fail "probability column not the default"
+  grep -q "^# loss=linear$" fits.csv || fail "binned probabilities: least squares"
+  grep -q "^# sigma=probability_error$" fits.csv || fail "not weighted by probability_error"
+  grep -q "^# sigma_zero=[1-9][0-9]* zero errors replaced" fits.csv || fail "zero errors not reported: $(grep '^#' fits.csv)"
+  grep -q "^delta,n,dropped,phi_c,phi_c_error,width,width_error,r2,chi2_dof,aic,at_bound$" fits.csv || fail "header"
+  grep -q "^0.04,12,0,0.14" fits.csv || fail "phi_c(0.04) $(grep '^0.04' fits.csv)"
+  grep -q "weighted" err.txt || fail "summary does not say weighted: $(cat err.txt)"
+  "$kcfit" sweep.csv --model sigmoid --where delta=0.04 --sigma none -q -o plain.csv || fail "--sigma none"
+  grep -q "^# sigma=" plain.csv && fail "--sigma none still weighted"
+  expect_error 2 "sweep.csv:2: no column 'nope' (--sigma)" "$kcfit" sweep.csv --model sigmoid --sigma nope -o out.csv
+  sed 's/,0.000000$/,-0.1/' sweep.csv >neg.csv
+  expect_error 2 "neg.csv:[0-9]*: probability_error .* is negative" "$kcfit" neg.csv --model sigmoid -o out.csv
+}
+case_several_files() {
+  percolate_runs 10 1 >all.csv
+  grep -v ',0.0[67],' all.csv >a.csv
+  { grep '^file' all.csv; grep ',0.0[67],' all.csv; } >b.csv
+  "$kcfit" all.csv --model sigmoid --group-by delta -q -o one.csv || fail "one file"
+  "$kcfit" a.csv b.csv --model sigmoid --group-by delta -q -o two.csv || fail "two files"
+  diff <(grep -v '^# \(provenance\|input\)' one.csv) <(grep -v '^# \(provenance\|input\)' two.csv) || fail "files differ from one"
+  grep -q "^# input=a.csv b.csv$" two.csv || fail "inputs not recorded"
+  cat b.csv - <<<'x.xyz,50,0.06,1.1,abc,0.2,1' >bad.csv
+  expect_error 2 "bad.csv:$(wc -l <bad.csv): column 'porosity': expected a number, got 'abc'" \
+    "$kcfit" a.csv bad.csv --model sigmoid -o out.csv
+  cut -d, -f2- b.csv >c.csv
+  expect_error 2 "c.csv:1: columns differ from those of a.csv" "$kcfit" a.csv c.csv --model sigmoid -o out.csv
+  # Several deltas fitted as one set: said on stderr.
+  "$kcfit" all.csv --model sigmoid -o one.csv 2>err.txt || fail "ungrouped"
+  grep -q "^kcfit: warning: the data hold 5 values of delta (0.03 ... 0.07), fitted as one set; fit each with --group-by delta" err.txt ||
+    fail "no warning: $(cat err.txt)"
+  grep -q "values of scale" err.txt && fail "warned about the scale, which is what moves the porosity"
+  "$kcfit" all.csv --model sigmoid --where "delta<1" -o one.csv 2>err.txt || fail "ungrouped --where"
+  grep -q warning err.txt && fail "warned with --where"
+  expect_error 2 "all.csv:2: no row satisfies --where delta=0.5" "$kcfit" all.csv --model sigmoid --where delta=0.5 -o out.csv
+  expect_error 2 "no column 'dleta' (--group-by)" "$kcfit" all.csv --model sigmoid --group-by dleta -o out.csv
+  expect_error 2 "--where: expected column=value" "$kcfit" all.csv --model sigmoid --where delta -o out.csv
+  expect_error 2 "--where delta=x: the value 'x' is not a number" "$kcfit" all.csv --model sigmoid --where delta=x -o out.csv
+  # A group whose fit fails is named.
+  printf 'delta,porosity,percolates\n0.04,0.1,0\n0.04,0.2,1\n0.04,0.15,1\n0.04,0.16,0\n0.04,0.12,0\n0.05,0.1,0\n0.05,0.11,0\n0.05,0.2,1\n0.05,0.21,1\n' >sep.csv
+  expect_error 1 "delta=0.05: .*perfectly separated" "$kcfit" sep.csv --model sigmoid --group-by delta -o out.csv
+}
+case_goodness() {
+  "$kcfit" "$perc" --model sigmoid -q >ml.csv || fail "ml"
+  for k in log_likelihood null_log_likelihood deviance pseudo_r2 aic; do grep -q "^# $k=" ml.csv || fail "ml lacks $k"; done
+  grep -q "^# r2=" ml.csv && fail "an R^2 quoted for a maximum-likelihood fit"
+  "$kcfit" "$flow" --model kc-percolation --loss log -q >ls.csv || fail "ls"
+  for k in r2 chi2_dof aic; do grep -q "^# $k=" ls.csv || fail "least squares lacks $k"; done
+  grep -q "^# pseudo_r2=" ls.csv && fail "pseudo R^2 for least squares"
+  "$kcfit" "$perc" --model sigmoid 2>&1 >/dev/null | grep -q "McFadden pseudo-R^2 = 0\.[0-9]" || fail "summary lacks pseudo-R^2"
+}
+case_bad_options_at_once() {
+  printf 'porosity,permeability\n0.2,1\n0.3,2\n' >in.csv
+  "$kcfit" in.csv --model kozeny --fix phi_c=abc --where delta --plot x.txt --loss cubic -o out.csv 2>err.txt
+  [ $? -eq 2 ] || fail "exit status"
+  for p in "--model: unknown model 'kozeny'" "--fix phi_c=abc: the value 'abc' is not a number" "--where: expected column=value" \
+    "--plot x.txt: the figure's format comes from its extension: .png, .svg or .pdf" "--loss: unknown loss 'cubic'"; do
+    grep -q -- "^kcfit: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
+  done
+  [ "$(wc -l <err.txt)" -eq 5 ] || fail "not one line per problem: $(cat err.txt)"
+  ! ls out.* x.txt .x.txt* 2>/dev/null | grep -q . || fail "left a file"
+  expect_error 2 "--plot fit.txt: the figure's format" "$kcfit" in.csv --model power --plot fit.txt -o out.csv
+}
+case_plot_formats() {
+  "$kcfit" "$perc" --model sigmoid --plot p.svg -q >/dev/null || fail "svg"
+  head -c 200 p.svg | grep -q "<svg\|<?xml" || fail "p.svg is not SVG"
+  grep -q "porosity" p.svg || fail "axis label missing in the SVG"
+  grep -q "McFadden" p.svg || fail "the ML figure does not quote McFadden's pseudo-R^2"
+  grep -q "R<tspan[^>]*>2" p.svg && ! grep -q "pseudo" p.svg && fail "an R^2"
+  "$kcfit" "$perc" --model sigmoid --plot p.pdf -q >/dev/null || fail "pdf"
+  [ "$(head -c 4 p.pdf)" = "%PDF" ] || fail "p.pdf is not a PDF"
+  "$kcfit" "$perc" --model sigmoid --plot P.PNG -q >/dev/null || fail "PNG"
+  [ "$(head -c 4 P.PNG | od -An -c | tr -d ' ')" = "211PNG" ] || fail "P.PNG"
+  percolate_runs 10 >perc.csv
+  "$kcfit" perc.csv --model sigmoid --group-by delta --plot groups.svg -q -o fits.csv || fail "grouped plot"
+  [ "$(grep -c 'path stroke=' groups.svg)" -gt 5 ] || fail "grouped plot draws little"
+  ! ls -a | grep -q '\.tmp' || fail "temporary left: $(ls -a)"
+}
+# A stand-in gnuplot on PATH: answers the terminal probe, then runs $FAKE_GNUPLOT.
+fake_gnuplot() {
+  mkdir -p fakebin
+  printf '#!/bin/sh\ncase "$1" in -e) exit 0 ;; esac\ntouch "%s/gnuplot.started"\n%s\n' "$PWD" "$1" >fakebin/gnuplot
+  chmod +x fakebin/gnuplot
+}
+case_plot_interrupted() {
+  # Ctrl-C (SIGINT to the foreground process group) while gnuplot runs: kcfit stops at once,
+  # by the signal, with no temporary folder or file and no "gnuplot failed".
+  fake_gnuplot "sleep 5; cat >/dev/null; exit 0"
+  set -m
+  PATH="$PWD/fakebin:$PATH" "$kcfit" "$perc" --model sigmoid --plot fig.png -o out.csv 2>err.txt &
+  local pid=$! t=0
+  while [ ! -e gnuplot.started ] && [ $t -lt 100 ]; do sleep 0.05; t=$((t + 1)); done
+  [ -e gnuplot.started ] || fail "gnuplot never started"
+  ! ls -a | grep -q '\.tmp' || fail "a temporary exists while gnuplot runs: $(ls -a)"
+  local start=$SECONDS
+  kill -INT -- -"$pid"
+  wait "$pid"; local status=$?
+  set +m
+  [ $((SECONDS - start)) -le 2 ] || fail "kcfit waited for gnuplot after Ctrl-C"
+  [ "$status" -eq 130 ] || fail "exit status $status after SIGINT (expected 130); stderr: $(cat err.txt)"
+  grep -q "gnuplot failed" err.txt && fail "Ctrl-C reported as a gnuplot failure"
+  ! ls -a | grep -q '\.tmp\|fig.png\|out.csv' || fail "left behind: $(ls -a)"
+}
+case_plot_gnuplot_killed() {
+  fake_gnuplot 'kill -KILL $$'
+  PATH="$PWD/fakebin:$PATH" expect_error 1 "gnuplot was killed by signal 9" "$kcfit" "$perc" --model sigmoid --plot out.png -o out.csv
+  fake_gnuplot 'echo "line 3: unknown terminal" >&2; exit 1'
+  PATH="$PWD/fakebin:$PATH" expect_error 1 "gnuplot failed (exit status 1): line 3: unknown terminal" \
+    "$kcfit" "$perc" --model sigmoid --plot out.png -o out.csv
+}
+case_same_seed_same_bytes() {
+  # Grouped bootstrap fits and their figure: the same bytes for the same seed on 1 and 2
+  # threads (provenance aside), no wall-clock time anywhere.
+  percolate_runs 10 >perc.csv
+  for t in 1 2; do
+    "$kcfit" perc.csv --model sigmoid --group-by delta --bootstrap 200 --seed 3 --threads $t -q -o g$t.csv --plot g$t.png ||
+      fail "threads $t"
+    "$kcfit" "$flow" --model kc-percolation --loss log --bootstrap 200 --seed 3 --threads $t -q -o f$t.csv || fail "flow $t"
+  done
+  cmp -s <(grep -v '^# provenance' g1.csv) <(grep -v '^# provenance' g2.csv) || fail "grouped bootstrap differs by threads"
+  cmp -s <(grep -v '^# provenance' f1.csv) <(grep -v '^# provenance' f2.csv) || fail "bootstrap differs by threads"
+  cmp -s g1.png g2.png || fail "figures differ"
+  grep -q "phi_c_bootstrap_stderr,phi_c_bootstrap_q025,phi_c_bootstrap_q975" g1.csv || fail "grouped bootstrap columns"
+  grep -qi "seconds\|time\|elapsed" g1.csv f1.csv && fail "wall-clock time in the output"
+  true
 }
 
 run_cases "$@"
