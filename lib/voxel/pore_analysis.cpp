@@ -31,7 +31,7 @@ GeometricPorosity geometric_porosity(const Packing& p) {
   const auto v = sphere_volumes(p.centres, p.radii, p.box, p.periodic);
   out.method = "sphere_pair_lenses";
   out.particle_volume_fraction = v.total / box_volume;
-  out.porosity = std::min(1.0, 1 - (v.total - v.pair_overlap) / box_volume);  // >= 0: Bonferroni
+  out.porosity = std::clamp(1 - (v.total - v.pair_overlap) / box_volume, 0.0, 1.0);  // >= 0 (Bonferroni) but for rounding
   out.exact = v.pair_correction_exact();
   out.triple_overlaps = v.triple_overlaps;
   out.image_overlaps = v.image_overlaps;

@@ -72,6 +72,28 @@ bool three_spheres_intersect(const Eigen::Vector3d& c1, double r1, const Eigen::
   return best < 0;
 }
 
+namespace {
+
+// Sum of f(e) over the images e = d + (k_x L_x, k_y L_y, k_z L_z) of a separation d (nearest
+// image) closer than reach, k = 0 along the axes that are not periodic.
+template <class F>
+void for_images_within(const Eigen::Vector3d& d, double reach, const Eigen::Vector3d& box, std::array<bool, 3> periodic,
+                       F&& f) {
+  long lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = periodic[a] ? static_cast<long>(std::ceil((-reach - d[a]) / box[a])) : 0;
+    hi[a] = periodic[a] ? static_cast<long>(std::floor((reach - d[a]) / box[a])) : 0;
+  }
+  for (long kx = lo[0]; kx <= hi[0]; ++kx)
+    for (long ky = lo[1]; ky <= hi[1]; ++ky)
+      for (long kz = lo[2]; kz <= hi[2]; ++kz) {
+        const Eigen::Vector3d e = d + Eigen::Vector3d(kx * box[0], ky * box[1], kz * box[2]);
+        if (e.norm() < reach) f(e, kx == 0 && ky == 0 && kz == 0);
+      }
+}
+
+}  // namespace
+
 SphereVolumes sphere_volumes(const mesh::VertexMatrix& centres, const Eigen::VectorXd& radii, const Eigen::Vector3d& box,
                              std::array<bool, 3> periodic) {
   SphereVolumes v;
@@ -88,25 +110,25 @@ SphereVolumes sphere_volumes(const mesh::VertexMatrix& centres, const Eigen::Vec
     for (long i = 0; i < n; ++i) {
       neighbours.clear();
       const double ri = radii[i];
-      for (int a = 0; a < 3; ++a)
-        if (periodic[a] && 2 * ri > box[a]) ++images[i];  // overlaps its own image
+      // the sphere and its own images: each pair of images once per cell (k and -k alike)
+      for_images_within(Eigen::Vector3d::Zero(), 2 * ri, box, periodic, [&](const Eigen::Vector3d& e, bool self) {
+        if (self) return;
+        per_sphere[i] += 0.5 * lens_volume(ri, ri, e.norm());
+        ++images[i];
+      });
+      images[i] /= 2;
       for (long j = i + 1; j < n; ++j) {
         Eigen::Vector3d d = (centres.row(j) - centres.row(i)).transpose();
         for (int a = 0; a < 3; ++a)
           if (periodic[a]) d[a] = minimum_image(d[a], box[a]);
-        const double reach = ri + radii[j], dist = d.norm();
-        per_sphere[i] += lens_volume(ri, radii[j], dist);
-        if (dist < reach) neighbours.emplace_back(j, d);
-        // the next image differs from the nearest along one axis
-        for (int a = 0; a < 3; ++a) {
-          if (!periodic[a]) continue;
-          Eigen::Vector3d e = d;
-          e[a] -= std::copysign(box[a], d[a] == 0 ? 1.0 : d[a]);
-          if (e.norm() < reach) {
-            ++images[i];
-            break;
-          }
-        }
+        const double reach = ri + radii[j];
+        int met = 0;
+        for_images_within(d, reach, box, periodic, [&](const Eigen::Vector3d& e, bool) {
+          per_sphere[i] += lens_volume(ri, radii[j], e.norm());
+          ++met;
+        });
+        if (d.norm() < reach) neighbours.emplace_back(j, d);
+        if (met > 1) ++images[i];  // the pair overlaps through more than one image
       }
       for (std::size_t p = 0; p < neighbours.size(); ++p)
         for (std::size_t q = p + 1; q < neighbours.size(); ++q) {

@@ -23,11 +23,12 @@ std::vector<double> shell_volumes(const mesh::VertexMatrix& V, const mesh::FaceM
 
 struct SphereVolumes {
   double total = 0;         // sum of 4/3 pi r^3
-  double pair_overlap = 0;  // sum over overlapping pairs of their lens volume (nearest image)
+  double pair_overlap = 0;  // sum of the lens volumes of every overlapping pair of spheres, periodic
+                            // images included (per cell: a sphere and its own image count too)
   // Where the pair-lens correction stops being exact (inclusion-exclusion cut after pairs):
   long triple_overlaps = 0;  // triples of spheres (nearest images) with a common interior point
-  long image_overlaps = 0;   // spheres overlapping their own periodic image, and pairs that
-                             // overlap through more than one image
+  long image_overlaps = 0;   // overlaps of a sphere with its own periodic images (counted per pair
+                             // of images), and pairs that overlap through more than one image
   bool pair_correction_exact() const { return triple_overlaps == 0 && image_overlaps == 0; }
 };
 // Volumes of a sphere packing in a box [0, box), periodic along the flagged axes. The union of

@@ -84,7 +84,9 @@ TEST_CASE("sphere_volumes says when the pair-lens correction is exact", "[voxel]
   // in 2 x 2 x 2 cells each neighbour is also met through the next image: one lens is missed
   cmp::mesh::VertexMatrix c8(8, 3);
   for (int i = 0; i < 8; ++i) c8.row(i) << (i & 1), (i >> 1 & 1), (i >> 2 & 1);
-  CHECK(sphere_volumes(c8, Eigen::VectorXd::Constant(8, 0.6), Eigen::Vector3d::Constant(2.0), {true, true, true}).image_overlaps == 12);
+  const auto v8 = sphere_volumes(c8, Eigen::VectorXd::Constant(8, 0.6), Eigen::Vector3d::Constant(2.0), {true, true, true});
+  CHECK(v8.image_overlaps == 12);
+  CHECK(v8.pair_overlap == Approx(24 * lens_volume(0.6, 0.6, 1)));  // both lenses of each of the 12 pairs
   const auto above = sphere_volumes(c, Eigen::VectorXd::Constant(64, rc * 1.001), box, {true, true, true});
   CHECK(above.triple_overlaps > 0);
   CHECK(above.image_overlaps == 0);
@@ -95,6 +97,11 @@ TEST_CASE("sphere_volumes says when the pair-lens correction is exact", "[voxel]
   CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.49), Eigen::Vector3d::Ones(), {true, true, true}).pair_correction_exact());
   CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.51), Eigen::Vector3d::Ones(), {true, true, true}).image_overlaps == 3);
   CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.51), Eigen::Vector3d::Ones(), {true, false, false}).image_overlaps == 1);
+  // its lenses with its own images are counted (once per pair of images): one sphere of r = 0.6
+  // in a unit cell fills the ball less six caps of height r - 1/2, i.e. 3 lenses, exactly
+  const auto self = sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.6), Eigen::Vector3d::Ones(), {true, true, true});
+  CHECK(self.pair_overlap == Approx(3 * lens_volume(0.6, 0.6, 1)));
+  CHECK(1 - (self.total - self.pair_overlap) > 0);
   // two spheres 0.5 apart in a unit cell overlap through both images along x
   cmp::mesh::VertexMatrix two(2, 3);
   two << 0.25, 0.5, 0.5, 0.75, 0.5, 0.5;
