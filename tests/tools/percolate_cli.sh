@@ -147,11 +147,12 @@ e=1-(4*math.pi*r**3/3-3*lens); p=float(sys.argv[1]); assert abs(p-e)<1e-12, (p,e
   # no column named porosity* is negative
   grep -v '^#' q.csv | awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i ~ /^porosity/) c[i] = $i; next }
     { for (i in c) if ($i + 0 < 0) { print c[i] "=" $i; bad = 1 } } END { exit bad }' || fail "negative porosity"
-  # one sphere of r = 0.74 in a unit cell overlaps its own images: sum V / V_box = 1.7
+  # one sphere of r = 0.74 in a unit cell overlaps its own images (6 at distance 1, 12 at sqrt 2:
+  # 9 pairs of images): sum V / V_box = 1.7
   printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0 0 0 0.74\n' > one.xyz
   "$percolate" one.xyz --delta 0.05 > o.csv 2> err.txt || fail "run one sphere"
   [ "$(field o.csv porosity_exact)" = 0 ] || fail "exact for one sphere"
-  grep -q "^percolate: warning: .*one.xyz at scale 1: 0 triples of spheres share a point, 3 spheres or pairs overlap through a periodic image" err.txt || fail "warning: $(cat err.txt)"
+  grep -q "^percolate: warning: .*one.xyz at scale 1: 0 triples of spheres share a point, 9 spheres or pairs overlap through a periodic image" err.txt || fail "warning: $(cat err.txt)"
   /usr/bin/python3 -c "import sys; assert 0 <= float(sys.argv[1]) <= 1" "$(field o.csv porosity)" || fail "porosity $(field o.csv porosity)"
   "$percolate" "$sc" --delta 0.1 --scale 1.8 2>&1 >/dev/null | grep -q "porosity -" && fail "summary prints a negative porosity"
   true
