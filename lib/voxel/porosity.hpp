@@ -1,6 +1,6 @@
 #pragma once
-// Porosity phi (in Chapter 5 "phi stands for the sample's porosity", thesis L658): from the
-// geometry, 1 - sum of particle volumes / box volume (digest 4(a)), and from a voxel image.
+// Porosity phi (in Chapter 5 of the thesis phi is the sample's porosity): from the geometry,
+// 1 - particle volume / box volume (with the overlaps of spheres), and from a voxel image.
 #include "mesh/tri_mesh.hpp"
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 // percolate: from a packing to its pore space, the percolating cluster, porosity and
-// hydraulic radius (thesis 5.2.2, 5.3.1-5.3.2; digest section 4).
+// hydraulic radius (thesis 5.2.2, 5.3.1-5.3.2).
 //   percolate pack_0.85.off --delta 0.04 -o cluster.vtk > percolate.csv     shells (packing OFF)
 //   percolate jammed.xyz --delta 0.04 --scale 1.05 -o cluster.vtk           spheres (extended XYZ)
 //   percolate packs/*.off --delta 0.03,0.04,0.05 --threads 2 > perc.csv     many packings, many delta
