@@ -209,7 +209,7 @@ TEST_CASE("one sphere larger than half the periodic cell is marked in every imag
   // the exact void at r + sqrt 3 delta and at r; centre marking between r +- sqrt 3 delta / 2.
   const double delta = 0.02, diag = std::sqrt(3.0) * delta;
   auto exact = [](double r) { return 1 - ball_in_cube(r, 0.5); };
-  for (const Eigen::Vector3d centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.31, 0.47, 0.73)}) {
+  for (const Eigen::Vector3d& centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.31, 0.47, 0.73)}) {
     for (double r : {0.3, 0.45, 0.55, 0.68, 0.74, 0.8, 0.85}) {
       INFO("r " << r << " centre " << centre.transpose());
       const double overlap = one_sphere_porosity(r, delta, SphereMarking::Overlap, centre);
@@ -236,7 +236,7 @@ TEST_CASE("one sphere in a periodic unit cell percolates exactly while r < 1 / s
     return spanning_count(label_face_flags(labels, g.dims, n), 0) > 0;
   };
   for (double delta : {0.02, 0.01}) {
-    for (const Eigen::Vector3d centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.5, 0.5, 0.5)}) {
+    for (const Eigen::Vector3d& centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.5, 0.5, 0.5)}) {
       INFO("delta " << delta << " centre " << centre.transpose());
       CHECK(!percolates(rc * (1 + 1e-9), delta, SphereMarking::Overlap, centre));
       CHECK(!percolates(0.74, delta, SphereMarking::Overlap, centre));
