@@ -8,19 +8,15 @@ spheres="$out/jammed.xyz"
 [ -f "$spheres" ] || spheres=data/percolate/simple_cubic_4x4x4.xyz
 step "percolate: $(basename "$spheres") inflated by 1.2, delta = 0.04 and 0.05 D0"
 "$bin/percolate" "$spheres" --delta 0.04,0.05 --scale 1.2 -o "$out/cluster_{delta}.vtk" --csv "$out/percolate.csv"
-# (up to r = 0.7 < a/sqrt 2: beyond, three spheres overlap and the pair-corrected porosity is no longer exact)
+# (the simple cubic array up to r = 0.7 < a/sqrt 2; beyond, three spheres share points and the
+# pair-corrected porosity is an upper bound: porosity_exact = 0 and a warning on stderr)
 step "percolate: inflation sweep (scale 1.0 to 1.75) at delta = 0.05, 0.1; percolation probability"
-scales="1.0 1.1 1.2 1.3 1.4 1.5 1.6 1.65 1.7 1.75"
-for s in $scales; do
-  "$bin/percolate" "$spheres" --delta 0.05,0.1 --scale "$s" -q --csv "$out/.sweep_$s.csv"
-done
-"$bin/percolate" sweep "$out"/.sweep_*.csv --bins 6 -o "$out/percolation_probability.csv"
-{ grep '^#' "$out/.sweep_1.0.csv"; grep -v '^#' "$out/.sweep_1.0.csv" | head -n 1; for s in $scales; do grep -v '^#' "$out/.sweep_$s.csv" | tail -n +2; done; } \
-  > "$out/percolate_sweep.csv"
-rm -f "$out"/.sweep_*.csv
+"$bin/percolate" "$spheres" --delta 0.05,0.1 --scale 1.0,1.1,1.2,1.3,1.4,1.5,1.6,1.65,1.7,1.75 -q \
+  --csv "$out/percolate_sweep.csv"
+"$bin/percolate" sweep "$out/percolate_sweep.csv" --bins 6 -o "$out/percolation_probability.csv"
 grep -v '^#' "$out/percolate_sweep.csv" | awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i;
-    printf "%6s %6s %10s %10s %9s %10s %10s\n", "scale", "delta", "phi_geom", "phi_voxel", "percol.", "R_h[D0]", "clusters"; next }
-  { printf "%6s %6s %10.4f %10.4f %9s %10.4f %10s\n", $c["scale"], $c["delta"], $c["porosity_geometry_overlap"],
+    printf "%6s %6s %10s %6s %10s %9s %10s %10s\n", "scale", "delta", "porosity", "exact", "phi_voxel", "percol.", "R_h[D0]", "clusters"; next }
+  { printf "%6s %6s %10.4f %6s %10.4f %9s %10.4f %10s\n", $c["scale"], $c["delta"], $c["porosity"], $c["porosity_exact"],
     $c["porosity_voxels"], $c["percolates"], $c["rh_faces_d0"], $c["clusters"] }' >&2
 if [ -f "$out/icosa4.off" ]; then
   step "percolate: one closed shell (icosa4.off, edges ~0.19) at delta = 0.05: triangles vs vertices"
@@ -39,7 +35,7 @@ fi
 
 cat >>"$out/README.txt" <<EOT
   cluster_0.04.vtk, cluster_0.05.vtk   percolating cluster of $(basename "$spheres") (ParaView; lbflow's input)
-  percolate.csv                  porosity, percolation per axis, R_h, ... one row per delta
+  percolate.csv                  porosity, percolation per axis, R_h, ... one row per delta (VTK in the packing's units)
   percolate_sweep.csv            the same for an inflation sweep (scale 1.0 to 1.75)
   percolation_probability.csv    percolation probability vs porosity per delta (percolate sweep)
 EOT

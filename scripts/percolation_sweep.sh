@@ -5,7 +5,9 @@
 #   shellpack jam -N 32 --seeds 1:50 -o 'jam_{seed}.xyz'
 #   scripts/percolation_sweep.sh -b build -d 0.03,0.04,0.05 -s "1.00 1.02 1.04 1.06 1.08 1.10" -o out/perc jam_*.xyz
 # Writes OUT/percolate.csv (one row per packing, scale and delta) and
-# OUT/percolation_probability.csv (binned, the input of kcfit's sigmoid fit).
+# OUT/percolation_probability.csv (binned per N and delta over the porosity column `porosity`:
+# columns particles, delta, porosity, porosity_low, porosity_high, packings, percolating,
+# probability, probability_error; kcfit's sigmoid fit reads either file as it is).
 set -euo pipefail
 build=build deltas=0.04 scales="1.0" out=out/percolation bins=10
 while getopts "b:d:s:o:n:" opt; do
@@ -17,15 +19,8 @@ done
 shift $((OPTIND - 1))
 [ $# -gt 0 ] || { echo "$0: no packing given" >&2; exit 2; }
 mkdir -p "$out"
-parts=()
-for s in $scales; do
-  "$build/bin/percolate" "$@" --delta "$deltas" --scale "$s" -q --csv "$out/.scale_$s.csv"
-  parts+=("$out/.scale_$s.csv")
-done
-# The first file's comments and header, then every file's rows (awk reads whole files: no
-# early-closed pipe to trip pipefail on large tables).
-awk 'FNR == 1 { header = 0 } /^#/ { if (NR == FNR) print; next }
-     !header { header = 1; if (NR == FNR) print; next } { print }' "${parts[@]}" > "$out/percolate.csv"
-"$build/bin/percolate" sweep "${parts[@]}" --bins "$bins" -o "$out/percolation_probability.csv"
-rm -f "${parts[@]}"
+# One percolate run over every packing x scale x delta (scales may be given with spaces or
+# commas), then the binning: no merging of tables by hand.
+"$build/bin/percolate" "$@" --delta "$deltas" --scale "$(echo $scales | tr ' ' ',')" -q --csv "$out/percolate.csv"
+"$build/bin/percolate" sweep "$out/percolate.csv" --bins "$bins" -o "$out/percolation_probability.csv"
 echo "$out/percolate.csv: $(($(grep -vc '^#' "$out/percolate.csv") - 1)) rows; $out/percolation_probability.csv" >&2

@@ -1,6 +1,6 @@
 #pragma once
 // The cubic lattice a packing is projected on (thesis 5.2.2): a box [0, L) cut into voxels of
-// side close to delta. When L / delta is not a whole number (digest 4(d)2) the grid has
+// side close to delta. When L / delta is not a whole number the grid has
 // n = round(L / delta) voxels along that axis and the actual spacing L / n is reported.
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Hydraulic radius of a cluster: its volume over its wetted surface (thesis 5.3.2; digest
-// 4(d)4 and 4(d)5). The surface is counted two ways: surface sites (cluster voxels with at
+// Hydraulic radius of a cluster: its volume over its wetted surface (thesis 5.3.2, Fig. 5.3).
+// The surface is counted two ways: surface sites (cluster voxels with at
 // least one solid face neighbour, the thesis's "number of surface sites") and exposed faces
 // (voxel faces between the cluster and the solid, the area in units of delta^2).
 #include "voxel/grid.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Percolation probability versus porosity (thesis Fig. 5.2B, C): the fraction of packings
 // whose void percolates, in porosity bins, for each system size N and lattice size delta.
-// The input of kcfit's sigmoid and threshold fits (digest 4(d)6).
+// The input of kcfit's sigmoid and threshold fits (Fig. 5.2 C-D).
 #include <vector>
 
 namespace cmp::voxel {

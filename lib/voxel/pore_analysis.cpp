@@ -7,6 +7,7 @@
 #include "voxel/porosity.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 
 namespace cmp::voxel {
@@ -14,6 +15,28 @@ namespace cmp::voxel {
 namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
+
+GeometricPorosity geometric_porosity(const Packing& p) {
+  GeometricPorosity out;
+  const double box_volume = p.box.prod();
+  if (p.kind == Packing::Kind::Shells) {
+    double v = 0;
+    for (double s : shell_volumes(p.V, p.F, p.shell_offsets)) v += s;
+    out.method = "shell_volumes";
+    out.particle_volume_fraction = v / box_volume;
+    out.porosity = std::clamp(1 - out.particle_volume_fraction, 0.0, 1.0);
+    out.exact = out.porosity == 1 - out.particle_volume_fraction;  // else shells overlap (or face inwards)
+    return out;
+  }
+  const auto v = sphere_volumes(p.centres, p.radii, p.box, p.periodic);
+  out.method = "sphere_pair_lenses";
+  out.particle_volume_fraction = v.total / box_volume;
+  out.porosity = std::clamp(1 - (v.total - v.pair_overlap) / box_volume, 0.0, 1.0);  // >= 0 (Bonferroni) but for rounding
+  out.exact = v.pair_correction_exact();
+  out.triple_overlaps = v.triple_overlaps;
+  out.image_overlaps = v.image_overlaps;
+  return out;
+}
 
 PoreAnalysis analyse_pores(const Packing& p, double delta, const PoreAnalysisOptions& o, std::vector<std::uint8_t>* cluster) {
   PoreAnalysis a;
@@ -25,7 +48,6 @@ PoreAnalysis analyse_pores(const Packing& p, double delta, const PoreAnalysisOpt
   }
   const VoxelGrid& g = a.grid;
   a.delta_actual = g.spacing / p.d0;
-  const double box_volume = p.box.prod();
 
   double t0 = now();
   std::vector<std::uint8_t> pore(g.size(), 1);
@@ -33,16 +55,11 @@ PoreAnalysis analyse_pores(const Packing& p, double delta, const PoreAnalysisOpt
     mark_shells(p.V, p.F, g, o.shell_marking, o.thickness * p.d0, pore);
     a.marking = shell_marking_name(o.shell_marking);
     if (o.thickness > 0) a.marking += "+" + io::format_number(o.thickness);
-    double v = 0;
-    for (double s : shell_volumes(p.V, p.F, p.shell_offsets)) v += s;
-    a.porosity_geometry = a.porosity_geometry_overlap = 1 - v / box_volume;
   } else {
     mark_spheres(p.centres, p.radii, g, o.sphere_marking, pore);
     a.marking = "spheres-" + sphere_marking_name(o.sphere_marking);
-    const auto v = sphere_volumes(p.centres, p.radii, p.box, p.periodic);
-    a.porosity_geometry = 1 - v.total / box_volume;
-    a.porosity_geometry_overlap = 1 - (v.total - v.pair_overlap) / box_volume;
   }
+  a.geometry = geometric_porosity(p);
   a.porosity_voxels = voxel_porosity(pore);
   a.void_voxels = static_cast<long>(std::llround(a.porosity_voxels * static_cast<double>(g.size())));  // exact below 2^53
   double t1 = now();
@@ -105,8 +122,10 @@ std::vector<std::pair<std::string, std::string>> pore_analysis_fields(const Pore
       {"delta_y_d0", format_number(a.delta_actual[1])},
       {"delta_z_d0", format_number(a.delta_actual[2])},
       {"marking", a.marking},
-      {"porosity_geometry", format_number(a.porosity_geometry)},
-      {"porosity_geometry_overlap", format_number(a.porosity_geometry_overlap)},
+      {"porosity", format_number(a.geometry.porosity)},
+      {"porosity_method", a.geometry.method},
+      {"porosity_exact", b(a.geometry.exact)},
+      {"particle_volume_fraction", format_number(a.geometry.particle_volume_fraction)},
       {"porosity_voxels", format_number(a.porosity_voxels)},
       {"clusters", std::to_string(a.clusters)},
       {"percolates_x", b(a.percolates[0])},
@@ -124,8 +143,6 @@ std::vector<std::pair<std::string, std::string>> pore_analysis_fields(const Pore
       {"rh_faces_delta", format_number(a.rh_faces_voxels)},
       {"rh_sites_d0", format_number(a.rh_sites_d0)},
       {"rh_faces_d0", format_number(a.rh_faces_d0)},
-      {"seconds_marking", format_number(a.seconds_marking)},
-      {"seconds_labelling", format_number(a.seconds_labelling)},
   };
 }
 

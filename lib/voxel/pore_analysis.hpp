@@ -15,6 +15,20 @@
 
 namespace cmp::voxel {
 
+// The one geometric porosity percolate reports (CSV column porosity) and how it was found.
+struct GeometricPorosity {
+  double porosity = 0;                  // in [0, 1]
+  std::string method;                   // "shell_volumes" or "sphere_pair_lenses"
+  bool exact = true;                    // false: spheres where the pair-lens correction is not exact
+  double particle_volume_fraction = 0;  // sum V / V_box (> 1 possible for overlapping spheres)
+  long triple_overlaps = 0, image_overlaps = 0;  // spheres: see SphereVolumes
+};
+// Shells: 1 - sum of enclosed shell volumes / V_box ("shell_volumes", exact for shells that do
+// not overlap; clamped to [0, 1] with exact = false when they must). Spheres: 1 - (sum V - sum of pair lenses) / V_box ("sphere_pair_lenses"), exact
+// while no point is in three spheres and no sphere or pair overlaps its own periodic image;
+// otherwise an upper bound of the true porosity (Bonferroni), capped at 1, with exact = false.
+GeometricPorosity geometric_porosity(const Packing& packing);
+
 struct PoreAnalysisOptions {
   ShellMarking shell_marking = ShellMarking::Triangles;
   SphereMarking sphere_marking = SphereMarking::Overlap;
@@ -30,8 +44,7 @@ struct PoreAnalysis {
   VoxelGrid grid;                  // in length units of the file
   Eigen::Vector3d delta_actual;    // grid.spacing / D_0
   std::string marking;             // "triangles", "vertices", "spheres-overlap", ... (+thickness)
-  double porosity_geometry = 0;    // 1 - sum V / V_box (thesis)
-  double porosity_geometry_overlap = 0;  // spheres: 1 - (sum V - pair lenses) / V_box; shells: same as above
+  GeometricPorosity geometry;      // the porosity of the packing itself (no voxels)
   double porosity_voxels = 0;      // void voxels / voxels
   int flow_axis = 0;
   int clusters = 0;                // components of the void (of the flow-axis labelling)
@@ -43,7 +56,7 @@ struct PoreAnalysis {
   long exposed_faces = 0;
   double rh_sites_voxels = 0, rh_faces_voxels = 0;  // [delta]
   double rh_sites_d0 = 0, rh_faces_d0 = 0;          // [D_0]
-  double seconds_marking = 0, seconds_labelling = 0;
+  double seconds_marking = 0, seconds_labelling = 0;  // wall clock (never in the CSV: see --timings)
 };
 
 // Analyses packing at voxel side delta [D_0]. When cluster is given it receives the grid's
@@ -53,7 +66,8 @@ struct PoreAnalysis {
 PoreAnalysis analyse_pores(const Packing& packing, double delta, const PoreAnalysisOptions& options,
                            std::vector<std::uint8_t>* cluster = nullptr);
 
-// Column names and values of one CSV row (units in the names).
+// Column names and values of one CSV row (units in the names), from nx to rh_faces_d0; no
+// timings, so the same input gives the same bytes.
 std::vector<std::pair<std::string, std::string>> pore_analysis_fields(const PoreAnalysis& a);
 
 }  // namespace cmp::voxel

@@ -1,6 +1,7 @@
 #include "voxel/solid_marking.hpp"
 
 #include "core/errors.hpp"
+#include "core/minimum_image.hpp"
 #include "voxel/triangle_box_overlap.hpp"
 
 #include <algorithm>
@@ -25,8 +26,9 @@ std::string sphere_marking_name(SphereMarking m) { return m == SphereMarking::Ov
 
 namespace {
 
-// Voxel indices [first, last] along axis a of the interval [lo, hi] (unwrapped), or an empty
-// range (first > last) when a non-periodic axis misses it.
+// Voxel indices [first, last] along axis a of the interval [lo, hi] (unwrapped, so along a
+// periodic axis the range may be longer than the axis and visit a voxel in several images), or
+// an empty range (first > last) when a non-periodic axis misses it.
 struct Range {
   long first, last;
 };
@@ -36,8 +38,6 @@ Range voxel_range(const VoxelGrid& g, int a, double lo, double hi) {
   if (!g.periodic[a]) {
     first = std::max(first, 0L);
     last = std::min(last, static_cast<long>(g.dims[a]) - 1);
-  } else if (last - first >= g.dims[a]) {
-    last = first + g.dims[a] - 1;  // covers the whole axis once
   }
   return {first, last};
 }
@@ -51,8 +51,10 @@ inline void set_solid(std::vector<std::uint8_t>& pore, std::size_t i) {
   std::atomic_ref<std::uint8_t>(pore[i]).store(0, std::memory_order_relaxed);
 }
 
-// Calls f(ix, iy, iz, centre) for every voxel of the box [lo, hi], with (ix, iy, iz) wrapped
-// into the grid and centre the voxel's centre in the element's own (unwrapped) image.
+// Calls f(ix, iy, iz, centre) for every voxel image meeting the box [lo, hi], with (ix, iy, iz)
+// wrapped into the grid and centre the centre of that image of the voxel (unwrapped). A box
+// longer than a periodic axis visits a voxel once per image it meets, so an element of any
+// size is tested against every image of the voxels it may touch.
 template <class F>
 void for_voxels(const VoxelGrid& g, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) {
   Range r[3];
@@ -112,24 +114,61 @@ void mark_shells(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const V
   }
 }
 
+namespace {
+
+// The voxels along one axis within `extent` of the coordinate p, with the signed offset of each
+// voxel centre from p: the nearest image along a periodic axis (cmp::minimum_image), so a
+// voxel is listed once whatever the extent, at its distance from the nearest image of p.
+struct AxisVoxels {
+  std::vector<int> index;
+  std::vector<double> offset;
+};
+void axis_voxels(const VoxelGrid& g, int a, double p, double extent, AxisVoxels& out) {
+  out.index.clear();
+  out.offset.clear();
+  const double h = g.spacing[a], L = g.box[a];
+  const int n = g.dims[a];
+  Range r = voxel_range(g, a, p - extent, p + extent);
+  if (g.periodic[a] && r.last - r.first + 1 >= n) r = {0, n - 1};  // every voxel, once
+  for (long i = r.first; i <= r.last; ++i) {
+    const int w = g.periodic[a] ? wrap(i, n) : static_cast<int>(i);
+    const double d = (w + 0.5) * h - p;
+    out.index.push_back(w);
+    out.offset.push_back(g.periodic[a] ? minimum_image(d, L) : d);
+  }
+}
+
+}  // namespace
+
 void mark_spheres(const mesh::VertexMatrix& centres, const Eigen::VectorXd& radii, const VoxelGrid& g,
                   SphereMarking method, std::vector<std::uint8_t>& pore) {
   const long n = centres.rows();
-  const Eigen::Vector3d half = 0.5 * g.spacing;
-#pragma omp parallel for schedule(dynamic, 16)
-  for (long s = 0; s < n; ++s) {
-    const Eigen::Vector3d p = centres.row(s).transpose();
-    const double r = radii[s], r2 = r * r;
-    const Eigen::Vector3d lo = p.array() - r, hi = p.array() + r;
-    for_voxels(g, lo, hi, [&](int i, int j, int k, const Eigen::Vector3d& c) {
-      double d2 = 0;
+#pragma omp parallel
+  {
+    AxisVoxels ax[3];
+    std::vector<double> d2[3];  // squared distance along each axis from the nearest point (Overlap) or the centre
+#pragma omp for schedule(dynamic, 16)
+    for (long s = 0; s < n; ++s) {
+      const double r = radii[s], r2 = r * r;
       for (int a = 0; a < 3; ++a) {
-        double d = std::abs(c[a] - p[a]);
-        if (method == SphereMarking::Overlap) d = std::max(0.0, d - half[a]);  // nearest point of the voxel
-        d2 += d * d;
+        axis_voxels(g, a, centres(s, a), r, ax[a]);
+        d2[a].resize(ax[a].offset.size());
+        for (std::size_t i = 0; i < d2[a].size(); ++i) {
+          double d = std::abs(ax[a].offset[i]);
+          if (method == SphereMarking::Overlap) d = std::max(0.0, d - 0.5 * g.spacing[a]);  // nearest point of the voxel
+          d2[a][i] = d * d;
+        }
       }
-      if (d2 < r2) set_solid(pore, g.index(i, j, k));
-    });
+      for (std::size_t k = 0; k < d2[2].size(); ++k) {
+        if (d2[2][k] >= r2) continue;
+        for (std::size_t j = 0; j < d2[1].size(); ++j) {
+          const double djk = d2[2][k] + d2[1][j];
+          if (djk >= r2) continue;
+          for (std::size_t i = 0; i < d2[0].size(); ++i)
+            if (djk + d2[0][i] < r2) set_solid(pore, g.index(ax[0].index[i], ax[1].index[j], ax[2].index[k]));
+        }
+      }
+    }
   }
 }
 

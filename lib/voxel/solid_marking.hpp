@@ -3,7 +3,9 @@
 // of a particle become solid (0) in a pore image whose voxels start as void (1). Shells are
 // marked by their vertices (the thesis's method, which leaks once delta is below the edge
 // length) or by their triangles (conservative triangle-voxel overlap, the default), optionally
-// thickened; spheres exactly. Elements that cross a periodic face are wrapped.
+// thickened; spheres exactly. Along periodic axes every voxel is tested against every image of an
+// element (the nearest image for spheres), so elements of any size, even larger than the box,
+// are marked wherever they reach.
 #include "mesh/tri_mesh.hpp"
 #include "voxel/grid.hpp"
 
@@ -44,7 +46,8 @@ std::string sphere_marking_name(SphereMarking m);
 void mark_shells(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const VoxelGrid& grid, ShellMarking method,
                  double thickness, std::vector<std::uint8_t>& pore);
 
-// Marks spheres solid in pore (see mark_shells), with their periodic images.
+// Marks spheres solid in pore (see mark_shells): a voxel is solid when the nearest image of
+// the sphere (cmp::minimum_image along each periodic axis) reaches it, at any radius.
 //   centres  #S by 3 [length units]; radii  #S radii (> 0) [length units]
 void mark_spheres(const mesh::VertexMatrix& centres, const Eigen::VectorXd& radii, const VoxelGrid& grid,
                   SphereMarking method, std::vector<std::uint8_t>& pore);

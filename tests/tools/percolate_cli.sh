@@ -40,7 +40,9 @@ case_spheres_csv() {
   [ "$(field p.csv d0_source)" = file ] || fail "d0_source"
   [ "$(field p.csv marking)" = spheres-overlap ] || fail "marking"
   /usr/bin/python3 -c "import math,sys; p=float(sys.argv[1]); e=1-4*math.pi*0.4**3/3; assert abs(p-e)<1e-12, (p,e)" \
-    "$(field p.csv porosity_geometry)" || fail "porosity_geometry"
+    "$(field p.csv porosity)" || fail "porosity"
+  [ "$(field p.csv porosity_method)" = sphere_pair_lenses ] || fail "porosity_method"
+  [ "$(field p.csv porosity_exact)" = 1 ] || fail "porosity_exact"
   [ "$(field p.csv percolates_x)$(field p.csv percolates_y)$(field p.csv percolates_z)" = 111 ] || fail "percolation"
   [ "$(field p.csv clusters)" = 1 ] || fail "clusters"
 }
@@ -58,8 +60,8 @@ case_scale_closes_the_channels() {
 case_vtk_cluster() {
   "$percolate" "$sc" --delta 0.1 --scale 1.2 -o cluster.vtk -q > p.csv || fail "run"
   [ "$(field p.csv percolates)" = 1 ] || fail "r = 0.48 should percolate"
-  head -10 cluster.vtk | grep -q "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"
-  head -2 cluster.vtk | grep -q "^percolating cluster along x of .*delta=0.1 D0=1 (file) marking=spheres-overlap | percolate " || fail "title: $(head -2 cluster.vtk)"
+  head -10 cluster.vtk | grep -q "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"  # D0 = 1
+  head -2 cluster.vtk | grep -q "^percolating cluster along x of .*scale=1.2 delta=0.1 D0=1 (file) marking=spheres-overlap .*| percolate " || fail "title: $(head -2 cluster.vtk)"
   /usr/bin/python3 - "$(field p.csv cluster_voxels)" <<'PY' || fail "VTK contents"
 import sys, numpy as np
 raw = open("cluster.vtk", "rb").read()
@@ -79,12 +81,91 @@ case_many_packings_and_deltas() {
   [ "$(field p.csv delta 2)" = 0.2 ] || fail "order: a 0.1, a 0.2, b 0.1, b 0.2"
   expect_error 2 "{name}" "$percolate" a.xyz b.xyz --delta 0.1 -o out.vtk
 }
-case_threads_same_output() {
-  strip() { grep -v '^#' "$1" | cut -d, -f1-33; }  # without the timing columns
-  "$percolate" "$sc" --delta 0.04 --scale 1.6 --threads 1 -o one.vtk -q > one.csv || fail "1 thread"
-  "$percolate" "$sc" --delta 0.04 --scale 1.6 --threads 2 -o two.vtk -q > two.csv || fail "2 threads"
-  cmp -s <(strip one.csv) <(strip two.csv) || fail "CSV differs: $(strip one.csv) vs $(strip two.csv)"
-  cmp -s <(tail -n +3 one.vtk) <(tail -n +3 two.vtk) || fail "VTK differs"  # all but the version line and title
+case_same_bytes() {
+  # Same input, same bytes: two runs, and 1 against 2 threads, give the same CSV and VTK but for
+  # the provenance line (and the VTK title, which quotes it); no wall-clock columns.
+  run() { "$percolate" "$sc" --delta 0.04,0.1 --scale 1.6 --threads "$1" -o "$2_{delta}.vtk" -q > "$2.csv" || fail "run $2"; }
+  run 1 one; run 1 again; run 2 two
+  ! grep -v '^#' one.csv | head -1 | grep -q seconds || fail "timing columns: $(grep -v '^#' one.csv | head -1)"
+  for b in again two; do
+    cmp -s <(grep -v '^# provenance=' one.csv) <(grep -v '^# provenance=' $b.csv) || fail "CSV differs: one vs $b"
+    for d in 0.04 0.1; do
+      cmp -s <(sed 2d one_$d.vtk) <(sed 2d ${b}_$d.vtk) || fail "VTK differs: one_$d vs ${b}_$d"
+    done
+  done
+  "$percolate" "$sc" --delta 0.1 --timings -q > t.csv 2> t.err || fail "--timings"
+  grep -q "^percolate: .*marking [0-9.]* s, labelling [0-9.]* s" t.err || fail "--timings: $(cat t.err)"
+  "$percolate" "$sc" --delta 0.1 -q > u.csv || fail "run"
+  cmp -s <(grep -v '^# provenance=' t.csv) <(grep -v '^# provenance=' u.csv) || fail "--timings changed the CSV"
+}
+case_vtk_in_packing_units() {
+  # With D0 = 2 length units, delta = 0.1 D0 is a spacing of 0.2: origin, spacing and the
+  # points span the packing's box of 4 (not 2, as in D0 units), so the cluster overlays it.
+  "$percolate" "$sc" --delta 0.1 --d0 2 --scale 1.2 -o c.vtk -q > p.csv || fail "run"
+  /usr/bin/python3 - <<'PY' || fail "VTK geometry: $(head -10 c.vtk | grep -a -v LOOKUP)"
+raw = open("c.vtk", "rb").read()
+head = raw.split(b"LOOKUP_TABLE default\n", 1)[0].decode()
+lines = {l.split()[0]: [float(x) for x in l.split()[1:]] for l in head.splitlines()[2:] if l.split() and l.split()[0] in ("DIMENSIONS", "SPACING", "ORIGIN")}
+dims, spacing, origin = lines["DIMENSIONS"], lines["SPACING"], lines["ORIGIN"]
+assert dims == [20, 20, 20], dims
+for a in range(3):
+    assert abs(dims[a] * spacing[a] - 4.0) < 1e-12, (dims, spacing)
+    assert abs(origin[a] - spacing[a] / 2) < 1e-12, (origin, spacing)
+title = head.splitlines()[1]
+assert "delta=0.1" in title and "D0=2" in title, title
+PY
+  [ "$(field p.csv nx)" = 20 ] || fail "nx"
+}
+case_scale_list() {
+  "$percolate" "$sc" --delta 0.1,0.2 --scale 1.0,1.1 -o 'c_{name}_{scale}_{delta}.vtk' -q > p.csv || fail "run"
+  [ "$(grep -vc '^#' p.csv)" = 5 ] || fail "rows: $(cat p.csv)"
+  [ "$(field p.csv scale 1),$(field p.csv delta 1) $(field p.csv scale 2),$(field p.csv delta 2) $(field p.csv scale 3),$(field p.csv delta 3) $(field p.csv scale 4),$(field p.csv delta 4)" = \
+    "1,0.1 1,0.2 1.1,0.1 1.1,0.2" ] || fail "order: packings x scales x deltas: $(cat p.csv)"
+  for f in c_simple_cubic_4x4x4_1.0_0.1.vtk c_simple_cubic_4x4x4_1.1_0.2.vtk; do [ -f $f ] || fail "$f missing: $(ls)"; done
+  # a scale changes the radii: the porosity falls
+  /usr/bin/python3 -c "import sys; assert float(sys.argv[1]) > float(sys.argv[2])" "$(field p.csv porosity 1)" \
+    "$(field p.csv porosity 3)" || fail "porosity does not fall with the scale"
+  expect_error 2 "{scale}" "$percolate" "$sc" --delta 0.1 --scale 1,1.1 -o out.vtk
+  expect_error 2 "scale must be positive" "$percolate" "$sc" --delta 0.1 --scale 1,-1 -o out.vtk
+  make_shell_packing
+  expect_error 2 "packing.off: --scale 1.1 applies to sphere packings" "$percolate" packing.off --delta 0.1 --scale 1.1 -o out.vtk
+}
+case_porosity_never_negative() {
+  # r = 0.56: pairs overlap, no point is in three spheres: the lens-corrected porosity is exact
+  "$percolate" "$sc" --delta 0.1 --scale 1.4 > p.csv 2> err.txt || fail "run"
+  /usr/bin/python3 -c "import sys,math
+r=0.56; s=2*r-1; lens=math.pi*s*s*(1+4*r+6*r*r-6*r*r)/12
+e=1-(4*math.pi*r**3/3-3*lens); p=float(sys.argv[1]); assert abs(p-e)<1e-12, (p,e)" "$(field p.csv porosity)" || fail "porosity $(field p.csv porosity)"
+  [ "$(field p.csv porosity_exact)" = 1 ] || fail "exact"
+  ! grep -q warning err.txt || fail "warned: $(cat err.txt)"
+  # r = 0.72 > 1/sqrt 2: three spheres share points; sum V / V_box = 1.56 > 1
+  "$percolate" "$sc" --delta 0.1 --scale 1.8 -q > q.csv 2> err.txt || fail "run 1.8"
+  [ "$(field q.csv porosity_exact)" = 0 ] || fail "exact at 1.8"
+  grep -q "^percolate: warning: the pair-lens porosity is an upper bound.*simple_cubic_4x4x4.xyz at scale 1.8: [1-9][0-9]* triples" err.txt \
+    || fail "no warning: $(cat err.txt)"
+  /usr/bin/python3 -c "import sys; assert float(sys.argv[1]) > 1" "$(field q.csv particle_volume_fraction)" || fail "volume fraction"
+  # no column named porosity* is negative
+  grep -v '^#' q.csv | awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i ~ /^porosity/) c[i] = $i; next }
+    { for (i in c) if ($i + 0 < 0) { print c[i] "=" $i; bad = 1 } } END { exit bad }' || fail "negative porosity"
+  # one sphere of r = 0.74 in a unit cell overlaps its own images (6 at distance 1, 12 at sqrt 2:
+  # 9 pairs of images): sum V / V_box = 1.7
+  printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0 0 0 0.74\n' > one.xyz
+  "$percolate" one.xyz --delta 0.05 > o.csv 2> err.txt || fail "run one sphere"
+  [ "$(field o.csv porosity_exact)" = 0 ] || fail "exact for one sphere"
+  grep -q "^percolate: warning: .*one.xyz at scale 1: 0 triples of spheres share a point, 9 spheres or pairs overlap through a periodic image" err.txt || fail "warning: $(cat err.txt)"
+  /usr/bin/python3 -c "import sys; assert 0 <= float(sys.argv[1]) <= 1" "$(field o.csv porosity)" || fail "porosity $(field o.csv porosity)"
+  "$percolate" "$sc" --delta 0.1 --scale 1.8 2>&1 >/dev/null | grep -q "porosity -" && fail "summary prints a negative porosity"
+  true
+}
+case_summary_on_a_terminal() {
+  # The per-run summary goes to stderr on a terminal (after the progress bar) as when piped.
+  command -v script >/dev/null || fail "script (util-linux) is needed to give percolate a terminal"
+  script -qec "'$percolate' '$sc' --delta 0.1,0.2 --csv p.csv" /dev/null > tty.txt || fail "run on a terminal"
+  [ "$(grep -ac 'percolate: .*simple_cubic_4x4x4.xyz scale=1 delta=0\.[12] .*porosity' tty.txt)" = 2 ] || fail "terminal: $(cat -v tty.txt)"
+  "$percolate" "$sc" --delta 0.1,0.2 --csv p.csv 2> piped.txt || fail "piped"
+  [ "$(grep -c 'percolate: .*scale=1 delta=0\.[12] .*porosity' piped.txt)" = 2 ] || fail "piped: $(cat piped.txt)"
+  script -qec "'$percolate' '$sc' --delta 0.1 -q --csv p.csv" /dev/null > quiet.txt || fail "run -q"
+  ! grep -aq 'porosity' quiet.txt || fail "-q: $(cat -v quiet.txt)"
 }
 case_shell_triangles_vs_vertices() {
   # The thesis's caveat: vertex marking leaks at delta below the edge length; triangles do not.
@@ -101,7 +182,8 @@ case_shell_triangles_vs_vertices() {
   [ "$(field thick.csv marking)" = vertices+0.05 ] || fail "marking column $(field thick.csv marking)"
   # porosity from the shell's enclosed volume: 1 - V / 27 with V a bit under 4 pi / 3
   /usr/bin/python3 -c "import sys,math; p=float(sys.argv[1]); assert 1-4*math.pi/3/27 < p < 1-0.99*4*math.pi/3/27, p" \
-    "$(field tri.csv porosity_geometry)" || fail "porosity $(field tri.csv porosity_geometry)"
+    "$(field tri.csv porosity)" || fail "porosity $(field tri.csv porosity)"
+  [ "$(field tri.csv porosity_method)" = shell_volumes ] || fail "porosity_method"
 }
 case_d0_from_off_comment() {
   make_shell_packing
@@ -122,11 +204,36 @@ case_periodic_labelling() {
 case_sweep() {
   for s in 1.0 1.2 1.7 1.8; do "$percolate" "$sc" --delta 0.1 --scale $s -q --csv r_$s.csv || fail "scale $s"; done
   "$percolate" sweep r_*.csv --bins 2 > prob.csv || fail "sweep"
-  grep -q "^particles,delta,porosity_low,porosity_high,porosity_mean,packings,percolating,probability" prob.csv || fail "header"
+  grep -qx "particles,delta,porosity,porosity_low,porosity_high,packings,percolating,probability,probability_error" prob.csv || fail "header: $(cat prob.csv)"
+  grep -q "^# porosity_column=porosity$" prob.csv || fail "porosity column meta"
+  grep -q "^# scales=1,1.2,1.7,1.8 " prob.csv || fail "scales meta: $(cat prob.csv)"
   [ "$(grep -vc '^#' prob.csv)" = 3 ] || fail "rows: $(cat prob.csv)"
-  # low-porosity bin: scales 1.7 and 1.8 (porosity < 0), neither percolates at delta = 0.1; high bin: both percolate
+  # low-porosity bin: scales 1.7 and 1.8, neither percolates at delta = 0.1; high bin: both percolate
   [ "$(grep -v '^#' prob.csv | sed -n 2p | cut -d, -f6-8)" = "2,0,0" ] || fail "low bin: $(cat prob.csv)"
   [ "$(grep -v '^#' prob.csv | sed -n 3p | cut -d, -f6-8)" = "2,2,1" ] || fail "high bin: $(cat prob.csv)"
+  # the same from one run over a list of scales, read from stdin
+  "$percolate" "$sc" --delta 0.1 --scale 1.0,1.2,1.7,1.8 -q | "$percolate" sweep - --bins 2 > prob2.csv || fail "sweep -"
+  cmp -s <(grep -v '^#' prob.csv) <(grep -v '^#' prob2.csv) || fail "stdin sweep differs: $(cat prob2.csv)"
+}
+case_sweep_refuses_other_tables() {
+  expect_error 2 "simple_cubic_4x4x4.xyz:[0-9]*: not a percolate CSV" "$percolate" sweep "$sc" -o out.csv
+  printf 'particles,delta,porosity\n10,0.1,0.5\n' > three.csv
+  expect_error 2 "three.csv:1: not a percolate CSV: no column 'percolates'" "$percolate" sweep three.csv -o out.csv
+  printf 'particles,delta,porosity,percolates\n10,0.1,0.5,1\n1e300,0.1,0.4,0\n' > big.csv
+  expect_error 2 "big.csv:3: expected a particle count" "$percolate" sweep big.csv -o out.csv
+  printf 'particles,delta,porosity,percolates\n10.5,0.1,0.5,1\n' > frac.csv
+  expect_error 2 "frac.csv:2: expected a particle count" "$percolate" sweep frac.csv -o out.csv
+  printf 'particles,delta,porosity,percolates\n10,0.1,0.5,2\n' > two.csv
+  expect_error 2 "two.csv:2: expected 0 or 1" "$percolate" sweep two.csv -o out.csv
+  # groups are not mixed silently: a table given twice, or runs of different kinds
+  "$percolate" "$sc" --delta 0.1 --scale 1,1.1 -q > a.csv || fail "run"
+  expect_error 2 "a.csv:[0-9]*: the run of .*simple_cubic_4x4x4.xyz at scale 1 and delta 0.1 is also at a.csv" \
+    "$percolate" sweep a.csv a.csv -o out.csv
+  "$percolate" "$sc" --delta 0.1 --scale 1.2 --sphere-marking centre -q > c.csv || fail "run centre"
+  expect_error 2 "c.csv:[0-9]*: marking 'spheres-centre' differs from 'spheres-overlap' at a.csv" \
+    "$percolate" sweep a.csv c.csv -o out.csv
+  "$percolate" "$sc" --delta 0.1 --scale 1.2 --connectivity 26 -q > n.csv || fail "run 26"
+  expect_error 2 "n.csv:1: connectivity '26' differs" "$percolate" sweep a.csv n.csv -o out.csv
 }
 case_sweep_script() {
   # scripts/percolation_sweep.sh: the pipeline for shellpack's jammed packings, on the simple
@@ -152,6 +259,8 @@ case_bad_delta() {
   expect_error 2 "delta.*not a number" "$percolate" "$sc" --delta 0.1,x -o out.vtk
   expect_error 2 "simple_cubic_4x4x4.xyz: .*larger than the box" "$percolate" "$sc" --delta 5 -o out.vtk
   expect_error 2 "delta is required" "$percolate" "$sc" -o out.vtk
+  "$percolate" "$sc" --delta 0 --scale 0 --axis w -o out.vtk 2> all.txt && fail "bad options accepted"
+  [ "$(grep -c . all.txt)" = 3 ] || fail "every bad option at once: $(cat all.txt)"
 }
 case_bad_sphere_file_without_radii() {
   printf '1\nLattice="2 0 0 0 2 0 0 0 2" Properties=species:S:1:pos:R:3 pbc="T T T"\nX 1 1 1\n' > norad.xyz

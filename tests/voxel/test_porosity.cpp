@@ -52,3 +52,59 @@ TEST_CASE("shell_volumes of two sphere meshes and voxel_porosity", "[voxel][poro
   CHECK(voxel_porosity({1, 0, 0, 1}) == 0.5);
   CHECK(voxel_porosity({}) == 0);
 }
+
+TEST_CASE("three_spheres_intersect decides a common point exactly", "[voxel][porosity]") {
+  // unit spheres on an equilateral triangle of side s meet iff the circumradius s / sqrt 3 < 1
+  auto tri = [](double s) {
+    return three_spheres_intersect(Eigen::Vector3d(0, 0, 0), 1, Eigen::Vector3d(s, 0, 0), 1,
+                                   Eigen::Vector3d(s / 2, s * std::sqrt(3.0) / 2, 0), 1);
+  };
+  CHECK(tri(std::sqrt(3.0) * (1 - 1e-9)));
+  CHECK(!tri(std::sqrt(3.0) * (1 + 1e-9)));
+  // pairwise overlapping on a line but the outer two apart: no common point
+  CHECK(!three_spheres_intersect(Eigen::Vector3d(0, 0, 0), 1, Eigen::Vector3d(1.9, 0, 0), 1,
+                                 Eigen::Vector3d(3.8, 0, 0), 1));
+  // a small sphere inside the lens of two others; collinear centres
+  CHECK(three_spheres_intersect(Eigen::Vector3d(0, 0, 0), 1, Eigen::Vector3d(1.5, 0, 0), 1,
+                                Eigen::Vector3d(0.75, 0, 0), 0.01));
+  // a small sphere beside the lens: overlaps each of the two but not their lens
+  CHECK(!three_spheres_intersect(Eigen::Vector3d(0, 0, 0), 1, Eigen::Vector3d(1.8, 0, 0), 1,
+                                 Eigen::Vector3d(0.9, 0.6, 0), 0.15));
+}
+
+TEST_CASE("sphere_volumes says when the pair-lens correction is exact", "[voxel][porosity]") {
+  // simple cubic array (4 x 4 x 4 cells of side 1): no point is in three spheres while r < 1/sqrt 2
+  cmp::mesh::VertexMatrix c(64, 3);
+  for (int i = 0; i < 64; ++i) c.row(i) << (i & 3), (i >> 2 & 3), (i >> 4 & 3);
+  const Eigen::Vector3d box = Eigen::Vector3d::Constant(4.0);
+  const double rc = 1 / std::sqrt(2.0);
+  const auto below = sphere_volumes(c, Eigen::VectorXd::Constant(64, rc * 0.999), box, {true, true, true});
+  CHECK(below.pair_correction_exact());
+  CHECK(below.pair_overlap == Approx(64 * 3 * lens_volume(rc * 0.999, rc * 0.999, 1)));
+  // in 2 x 2 x 2 cells each neighbour is also met through the next image: one lens is missed
+  cmp::mesh::VertexMatrix c8(8, 3);
+  for (int i = 0; i < 8; ++i) c8.row(i) << (i & 1), (i >> 1 & 1), (i >> 2 & 1);
+  const auto v8 = sphere_volumes(c8, Eigen::VectorXd::Constant(8, 0.6), Eigen::Vector3d::Constant(2.0), {true, true, true});
+  CHECK(v8.image_overlaps == 12);
+  CHECK(v8.pair_overlap == Approx(24 * lens_volume(0.6, 0.6, 1)));  // both lenses of each of the 12 pairs
+  const auto above = sphere_volumes(c, Eigen::VectorXd::Constant(64, rc * 1.001), box, {true, true, true});
+  CHECK(above.triple_overlaps > 0);
+  CHECK(above.image_overlaps == 0);
+  CHECK(!above.pair_correction_exact());
+  // one sphere in a unit cell: it overlaps its own image once 2 r > 1
+  cmp::mesh::VertexMatrix one(1, 3);
+  one << 0.5, 0.5, 0.5;
+  CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.49), Eigen::Vector3d::Ones(), {true, true, true}).pair_correction_exact());
+  CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.51), Eigen::Vector3d::Ones(), {true, true, true}).image_overlaps == 3);
+  CHECK(sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.51), Eigen::Vector3d::Ones(), {true, false, false}).image_overlaps == 1);
+  // its lenses with its own images are counted (once per pair of images): one sphere of r = 0.6
+  // in a unit cell fills the ball less six caps of height r - 1/2, i.e. 3 lenses, exactly
+  const auto self = sphere_volumes(one, Eigen::VectorXd::Constant(1, 0.6), Eigen::Vector3d::Ones(), {true, true, true});
+  CHECK(self.pair_overlap == Approx(3 * lens_volume(0.6, 0.6, 1)));
+  CHECK(1 - (self.total - self.pair_overlap) > 0);
+  // two spheres 0.5 apart in a unit cell overlap through both images along x
+  cmp::mesh::VertexMatrix two(2, 3);
+  two << 0.25, 0.5, 0.5, 0.75, 0.5, 0.5;
+  CHECK(sphere_volumes(two, Eigen::VectorXd::Constant(2, 0.3), Eigen::Vector3d::Ones(), {true, true, true}).image_overlaps == 1);
+  CHECK(sphere_volumes(two, Eigen::VectorXd::Constant(2, 0.24), Eigen::Vector3d::Ones(), {true, true, true}).pair_correction_exact());
+}

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 using namespace cmp::voxel;
@@ -142,4 +144,158 @@ TEST_CASE("marking method names", "[voxel][marking]") {
   CHECK_THROWS(shell_marking_from_name("faces"));
   CHECK(sphere_marking_from_name("centre") == SphereMarking::Centre);
   CHECK_THROWS(sphere_marking_from_name("inside"));
+}
+
+namespace {
+
+// Exact area of the disc of radius rho centred in the square [-a, a]^2.
+double disc_in_square(double rho, double a) {
+  if (rho <= 0) return 0;
+  if (rho <= a) return M_PI * rho * rho;
+  if (rho >= a * std::sqrt(2.0)) return 4 * a * a;
+  auto F = [rho](double x) { return 0.5 * (x * std::sqrt(std::max(0.0, rho * rho - x * x)) + rho * rho * std::asin(x / rho)); };
+  const double x0 = std::sqrt(rho * rho - a * a);
+  return 4 * (a * x0 + F(a) - F(x0));
+}
+
+// Exact volume of the ball of radius r centred in the cube [-a, a]^3: the solid of one sphere
+// in a periodic cubic cell of side 2a (the cube is the sphere's nearest-image cell). The area
+// of a slice is closed-form; the integral over z is Gauss-Legendre on panels between the
+// kinks (|z| = r, sqrt(r^2 - a^2), sqrt(r^2 - 2 a^2)), accurate to ~1e-12.
+double ball_in_cube(double r, double a) {
+  std::vector<double> cuts{0.0, std::min(r, a)};
+  for (double k : {1.0, 2.0})
+    if (r * r - k * a * a > 0 && std::sqrt(r * r - k * a * a) < cuts[1]) cuts.push_back(std::sqrt(r * r - k * a * a));
+  std::sort(cuts.begin(), cuts.end());
+  static const double x[5] = {0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640, 0.9061798459386640};
+  static const double w[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
+                              0.2369268850561891};
+  double v = 0;
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    const int panels = 4000;
+    const double h = (cuts[c + 1] - cuts[c]) / panels;
+    for (int p = 0; p < panels; ++p)
+      for (int q = 0; q < 5; ++q) {
+        const double z = cuts[c] + h * (p + 0.5 + 0.5 * x[q]);
+        v += 0.5 * h * w[q] * disc_in_square(std::sqrt(std::max(0.0, r * r - z * z)), a);
+      }
+  }
+  return 2 * v;  // both halves in z
+}
+
+// Void fraction of one sphere of radius r at `centre` in the periodic unit cube, voxelised.
+double one_sphere_porosity(double r, double delta, SphereMarking m, const Eigen::Vector3d& centre) {
+  const auto g = make_grid(Eigen::Vector3d::Ones(), delta);
+  std::vector<std::uint8_t> pore(g.size(), 1);
+  cmp::mesh::VertexMatrix c(1, 3);
+  c.row(0) = centre.transpose();
+  mark_spheres(c, Eigen::VectorXd::Constant(1, r), g, m, pore);
+  return voxel_porosity(pore);
+}
+
+}  // namespace
+
+TEST_CASE("the exact ball-in-cube volume has the right limits", "[voxel][marking]") {
+  CHECK(ball_in_cube(0.3, 0.5) == Approx(4 * M_PI / 3 * 0.027).epsilon(1e-12));
+  CHECK(ball_in_cube(0.9, 0.5) == Approx(1).epsilon(1e-12));
+  // r = a sqrt 2: the ball less six caps of height r - a
+  const double r = 0.5 * std::sqrt(2.0), h = r - 0.5;
+  CHECK(ball_in_cube(r, 0.5) == Approx(4 * M_PI / 3 * r * r * r - 6 * M_PI * h * h * (3 * r - h) / 3).epsilon(1e-10));
+}
+
+TEST_CASE("one sphere larger than half the periodic cell is marked in every image", "[voxel][marking]") {
+  // The solid of one sphere in a periodic unit cell is the ball clipped to its nearest-image
+  // cube. Overlap marking makes every voxel touching the ball solid, so its void lies between
+  // the exact void at r + sqrt 3 delta and at r; centre marking between r +- sqrt 3 delta / 2.
+  const double delta = 0.02, diag = std::sqrt(3.0) * delta;
+  auto exact = [](double r) { return 1 - ball_in_cube(r, 0.5); };
+  for (const Eigen::Vector3d& centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.31, 0.47, 0.73)}) {
+    for (double r : {0.3, 0.45, 0.55, 0.68, 0.74, 0.8, 0.85}) {
+      INFO("r " << r << " centre " << centre.transpose());
+      const double overlap = one_sphere_porosity(r, delta, SphereMarking::Overlap, centre);
+      CHECK(overlap <= exact(r) + 1e-12);
+      CHECK(overlap >= exact(r + diag) - 1e-12);
+      const double c = one_sphere_porosity(r, delta, SphereMarking::Centre, centre);
+      CHECK(c <= exact(r - diag / 2) + 1e-12);
+      CHECK(c >= exact(r + diag / 2) - 1e-12);
+      CHECK(c == Approx(exact(r)).margin(3e-3));
+    }
+  }
+}
+
+TEST_CASE("one sphere in a periodic unit cell percolates exactly while r < 1 / sqrt 2", "[voxel][marking]") {
+  const double rc = 1 / std::sqrt(2.0);
+  auto percolates = [](double r, double delta, SphereMarking m, const Eigen::Vector3d& centre) {
+    const auto g = make_grid(Eigen::Vector3d::Ones(), delta);
+    std::vector<std::uint8_t> pore(g.size(), 1);
+    cmp::mesh::VertexMatrix c(1, 3);
+    c.row(0) = centre.transpose();
+    mark_spheres(c, Eigen::VectorXd::Constant(1, r), g, m, pore);
+    std::vector<std::int32_t> labels;
+    const int n = label_components(pore.data(), g.dims, labels);
+    return spanning_count(label_face_flags(labels, g.dims, n), 0) > 0;
+  };
+  for (double delta : {0.02, 0.01}) {
+    for (const Eigen::Vector3d& centre : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.5, 0.5, 0.5)}) {
+      INFO("delta " << delta << " centre " << centre.transpose());
+      CHECK(!percolates(rc * (1 + 1e-9), delta, SphereMarking::Overlap, centre));
+      CHECK(!percolates(0.74, delta, SphereMarking::Overlap, centre));
+      CHECK(!percolates(rc + delta, delta, SphereMarking::Centre, centre));
+      CHECK(!percolates(0.74, delta, SphereMarking::Centre, centre));
+      CHECK(percolates(rc - std::sqrt(3.0) * delta, delta, SphereMarking::Overlap, centre));
+      CHECK(percolates(rc - delta, delta, SphereMarking::Centre, centre));
+    }
+  }
+}
+
+TEST_CASE("a triangle longer than the periodic box is marked in every image", "[voxel][marking]") {
+  // One thin triangle 1.8 box lengths long in the plane z = 0.5 of a periodic unit cell, against
+  // the same triangle cut into 64 pieces shorter than half the box: the same solid voxels.
+  const auto g = make_grid(Eigen::Vector3d::Ones(), 0.02);
+  const Eigen::Vector3d a(-0.2, 0.3, 0.5013), b(1.6, 0.3, 0.5013), c(1.6, 0.7, 0.5013);
+  cmp::mesh::VertexMatrix V(3, 3);
+  V << a.transpose(), b.transpose(), c.transpose();
+  cmp::mesh::FaceMatrix F(1, 3);
+  F << 0, 1, 2;
+  // 8 x 8 sub-triangles by barycentric subdivision of the edges
+  const int n = 8;
+  cmp::mesh::VertexMatrix Vs((n + 1) * (n + 2) / 2, 3);
+  std::vector<std::array<int, 2>> ij;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      Vs.row(static_cast<long>(ij.size())) = (a + (b - a) * i / n + (c - a) * j / n).transpose();
+      ij.push_back({i, j});
+    }
+  auto at = [&](int i, int j) {
+    for (std::size_t k = 0; k < ij.size(); ++k)
+      if (ij[k][0] == i && ij[k][1] == j) return static_cast<int>(k);
+    return -1;
+  };
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      faces.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      if (i + j + 1 < n) faces.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  cmp::mesh::FaceMatrix Fs(static_cast<long>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f) Fs.row(static_cast<long>(f)) << faces[f][0], faces[f][1], faces[f][2];
+  REQUIRE(Fs.rows() == n * n);
+  std::vector<std::uint8_t> whole(g.size(), 1), pieces(g.size(), 1);
+  mark_shells(V, F, g, ShellMarking::Triangles, 0.0, whole);
+  mark_shells(Vs, Fs, g, ShellMarking::Triangles, 0.0, pieces);
+  long solid = 0, differ = 0;
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    solid += whole[i] == 0;
+    differ += whole[i] != pieces[i];
+  }
+  CHECK(differ == 0);
+  CHECK(solid > 0);
+  // (0.31, 0.61, 0.5) is covered only by the image of the triangle at x = 1.31
+  CHECK(whole[g.index(15, 30, 25)] == 0);
+  // thickened: a vertex with thickness larger than half the box makes every voxel solid
+  std::vector<std::uint8_t> all(g.size(), 1);
+  cmp::mesh::VertexMatrix p(1, 3);
+  p << 0.1, 0.2, 0.3;
+  mark_shells(p, cmp::mesh::FaceMatrix(0, 3), g, ShellMarking::Vertices, 0.55, all);
+  CHECK(std::count(all.begin(), all.end(), 1) == 0);
 }

@@ -1,5 +1,5 @@
 // percolate: from a packing to its pore space, the percolating cluster, porosity and
-// hydraulic radius (thesis 5.2.2, 5.3.1-5.3.2; digest section 4).
+// hydraulic radius (thesis 5.2.2, 5.3.1-5.3.2).
 //   percolate pack_0.85.off --delta 0.04 -o cluster.vtk > percolate.csv     shells (packing OFF)
 //   percolate jammed.xyz --delta 0.04 --scale 1.05 -o cluster.vtk           spheres (extended XYZ)
 //   percolate packs/*.off --delta 0.03,0.04,0.05 --threads 2 > perc.csv     many packings, many delta
@@ -21,6 +21,9 @@
 
 #include <filesystem>
 #include <iostream>
+#include <algorithm>
+#include <limits>
+#include <map>
 #include <set>
 
 using namespace cmp;
@@ -30,25 +33,26 @@ namespace {
 struct Options {
   cli::CommonOptions common;
   std::vector<std::string> inputs;
-  std::string deltas, vtk, csv = "-";
-  double d0 = 0, scale = 1, thickness = 0;
+  std::string deltas, scales = "1", vtk, csv = "-";
+  double d0 = 0, thickness = 0;
   std::string marking = "triangles", sphere_marking = "overlap", connectivity = "6", axis = "x";
-  bool periodic = false;
+  bool periodic = false, timings = false;
   // sweep
   std::vector<std::string> tables;
   int bins = 10;
-  std::string porosity_column = "porosity_geometry_overlap";
+  std::string porosity_column = "porosity";
 };
 
-std::vector<double> parse_deltas(const std::string& text, std::vector<std::string>& names) {
+// A comma-separated list of positive numbers, with the tokens as typed (for {delta}, {scale}).
+std::vector<double> parse_list(const std::string& option, const std::string& text, std::vector<std::string>& names) {
   std::vector<double> out;
   std::size_t at = 0;
   while (at <= text.size()) {
     const auto comma = std::min(text.find(',', at), text.size());
     const std::string token = text.substr(at, comma - at);
     double v = 0;
-    if (!io::try_parse_double(token, v)) throw UsageError("--delta: '" + token + "' is not a number");
-    if (!(v > 0) || !std::isfinite(v)) throw UsageError("--delta must be positive, got " + token);
+    if (!io::try_parse_double(token, v)) throw UsageError(option + ": '" + token + "' is not a number");
+    if (!(v > 0) || !std::isfinite(v)) throw UsageError(option + " must be positive, got " + token);
     out.push_back(v);
     names.push_back(token);
     at = comma + 1;
@@ -58,11 +62,16 @@ std::vector<double> parse_deltas(const std::string& text, std::vector<std::strin
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
+// One run: a packing at one radius scale and one delta.
+struct Run {
+  std::size_t packing, scale, delta;
+};
+
 void run_percolate(const Options& o, const std::string& provenance) {
   voxel::PoreAnalysisOptions ao;
   cli::OptionChecks checks;
-  std::vector<std::string> delta_names;
-  std::vector<double> deltas;
+  std::vector<std::string> delta_names, scale_names;
+  std::vector<double> deltas, scales;
   auto collect = [&](auto&& f) {
     try {
       f();
@@ -71,23 +80,29 @@ void run_percolate(const Options& o, const std::string& provenance) {
     }
   };
   checks.require(!o.inputs.empty(), "no packing given (OFF or extended XYZ files)");
-  collect([&] { deltas = parse_deltas(o.deltas, delta_names); });
+  if (o.deltas.empty()) checks.require(false, "--delta is required");
+  else collect([&] { deltas = parse_list("--delta", o.deltas, delta_names); });
+  collect([&] { scales = parse_list("--scale", o.scales, scale_names); });
   collect([&] { ao.shell_marking = voxel::shell_marking_from_name(o.marking); });
   collect([&] { ao.sphere_marking = voxel::sphere_marking_from_name(o.sphere_marking); });
   collect([&] { ao.connectivity = voxel::connectivity_from_name(o.connectivity); });
   collect([&] { ao.flow_axis = voxel::axis_from_name("--axis", o.axis); });
-  checks.require(o.scale > 0 && std::isfinite(o.scale), fmt::format("--scale must be positive, got {}", o.scale));
   checks.require(o.thickness >= 0 && std::isfinite(o.thickness), fmt::format("--thickness must be >= 0, got {}", o.thickness));
   checks.require(o.d0 >= 0 && std::isfinite(o.d0), fmt::format("--d0 must be positive, got {}", o.d0));
-  const std::size_t runs = o.inputs.size() * std::max<std::size_t>(deltas.size(), 1);
+  // Runs in this order: packings, then scales, then deltas (the CSV rows and -o files alike).
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < o.inputs.size(); ++i)
+    for (std::size_t s = 0; s < scales.size(); ++s)
+      for (std::size_t k = 0; k < deltas.size(); ++k) runs.push_back({i, s, k});
   std::vector<std::string> vtk_names;
   if (!o.vtk.empty()) {
-    for (const auto& in : o.inputs)
-      for (const auto& d : delta_names)
-        vtk_names.push_back(cli::expand_pattern(cli::expand_pattern(o.vtk, "name", stem(in)), "delta", d));
+    for (const auto& r : runs)
+      vtk_names.push_back(cli::expand_pattern(
+          cli::expand_pattern(cli::expand_pattern(o.vtk, "name", stem(o.inputs[r.packing])), "scale", scale_names[r.scale]),
+          "delta", delta_names[r.delta]));
     checks.require(std::set<std::string>(vtk_names.begin(), vtk_names.end()).size() == vtk_names.size(),
-                   "-o must tell runs apart with {name} (input file name) and/or {delta} when several packings or "
-                   "deltas are given, e.g. -o 'cluster_{name}_{delta}.vtk'");
+                   "-o must tell runs apart with {name} (input file name), {scale} and/or {delta} when several "
+                   "packings, scales or deltas are given, e.g. -o 'cluster_{name}_{scale}_{delta}.vtk'");
   }
   checks.throw_if_any();
   ao.thickness = o.thickness;
@@ -96,27 +111,55 @@ void run_percolate(const Options& o, const std::string& provenance) {
   // Read every packing first: a bad file stops the run before any output is written.
   std::vector<voxel::Packing> packings(o.inputs.size());
   parallel_for_each_job(static_cast<long>(o.inputs.size()),
-                        [&](long i) { packings[i] = voxel::read_packing(o.inputs[i], {o.scale, o.d0}); });
-  for (const auto& p : packings)
+                        [&](long i) { packings[i] = voxel::read_packing(o.inputs[i], {1.0, o.d0}); });
+  for (const auto& p : packings) {
+    if (p.kind == voxel::Packing::Kind::Shells)
+      for (std::size_t s = 0; s < scales.size(); ++s)
+        if (scales[s] != 1)
+          throw UsageError(fmt::format("{}: --scale {} applies to sphere packings (extended XYZ) only; this is a "
+                                       "packing of shells", p.file, scale_names[s]));
     for (std::size_t k = 0; k < deltas.size(); ++k)
       if (deltas[k] * p.d0 > p.box.minCoeff())
         throw UsageError(fmt::format("{}: --delta {} is larger than the box (smallest side {} = {:.4g} D0, D0 = {} from {})",
                                      p.file, delta_names[k], p.box.minCoeff(), p.box.minCoeff() / p.d0,
                                      io::format_number(p.d0), p.d0_source));
+  }
   io::AtomicOutput csv_out(o.csv);
   io::CsvWriter csv(csv_out.stream());
   csv.meta("provenance", provenance);
   csv.meta("connectivity", o.connectivity);
   csv.meta("labelling", o.periodic ? "periodic perpendicular to each axis" : "not periodic (scipy.ndimage.label)");
-  csv.meta("units", "delta and rh_*_d0 in D0; rh_*_delta in voxel sides (actual spacing); porosity 1 - sum V/V_box");
+  csv.meta("porosity", "geometric, without voxels: porosity_method shell_volumes = 1 - sum of shell volumes / V_box; "
+                       "sphere_pair_lenses = 1 - (sum of sphere volumes - pair lenses) / V_box, exact where "
+                       "porosity_exact = 1, else an upper bound; porosity_voxels = void voxels / voxels");
+  csv.meta("units", "delta, delta_*_d0 and rh_*_d0 in D0; rh_*_delta in voxel sides (actual spacing); VTK origin and "
+                    "spacing in the packing's length units");
   bool header = false;
-  cli::ProgressBar bar("percolate", static_cast<double>(runs), o.common.quiet);
-  std::size_t done = 0;
-  for (std::size_t i = 0; i < packings.size(); ++i) {
-    const auto& p = packings[i];
-    for (std::size_t k = 0; k < deltas.size(); ++k) {
+  std::vector<std::string> summaries, inexact;
+  long inexact_runs = 0;
+  {
+    cli::ProgressBar bar("percolate", static_cast<double>(runs.size()), o.common.quiet);
+    voxel::Packing scaled;
+    std::size_t done = 0;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const auto& run = runs[r];
+      if (r == 0 || runs[r - 1].packing != run.packing || runs[r - 1].scale != run.scale) {
+        scaled = packings[run.packing];
+        if (scaled.kind == voxel::Packing::Kind::Spheres) {
+          scaled.radii *= scales[run.scale];
+          scaled.scale = scales[run.scale];
+        }
+      }
+      const auto& p = scaled;
       std::vector<std::uint8_t> cluster;
-      const auto a = voxel::analyse_pores(p, deltas[k], ao, o.vtk.empty() ? nullptr : &cluster);
+      const auto a = voxel::analyse_pores(p, deltas[run.delta], ao, o.vtk.empty() ? nullptr : &cluster);
+      if (run.delta == 0 && !a.geometry.exact) {
+        ++inexact_runs;
+        if (inexact.size() < 3)
+          inexact.push_back(fmt::format("{} at scale {}: {} triples of spheres share a point, {} spheres or pairs "
+                                        "overlap through a periodic image", p.file, scale_names[run.scale],
+                                        a.geometry.triple_overlaps, a.geometry.image_overlaps));
+      }
       std::vector<std::pair<std::string, std::string>> fields{
           {"file", p.file},
           {"kind", p.kind == voxel::Packing::Kind::Shells ? "shells" : "spheres"},
@@ -124,7 +167,7 @@ void run_percolate(const Options& o, const std::string& provenance) {
           {"d0", io::format_number(p.d0)},
           {"d0_source", p.d0_source},
           {"scale", io::format_number(p.scale)},
-          {"delta", delta_names[k]}};
+          {"delta", delta_names[run.delta]}};
       for (auto& f : voxel::pore_analysis_fields(a)) fields.push_back(std::move(f));
       if (!header) {
         std::vector<std::string> names;
@@ -138,25 +181,47 @@ void run_percolate(const Options& o, const std::string& provenance) {
       if (!o.vtk.empty()) {
         io::VoxelImage<std::uint8_t> img;
         img.dims = a.grid.dims;
-        img.spacing = a.delta_actual;
-        img.origin = 0.5 * a.delta_actual;  // voxel centres, in D0
+        img.spacing = a.grid.spacing;       // in the packing's own length units, so the cluster
+        img.origin = 0.5 * a.grid.spacing;  // overlays the packing; points at the voxel centres
         img.name = "cluster";
         img.data = std::move(cluster);
-        io::write_vtk(vtk_names[i * deltas.size() + k], img,
-                      fmt::format("percolating cluster along {} of {} delta={} D0={} ({}) marking={} | {}", o.axis,
-                                  p.file, delta_names[k], io::format_number(p.d0), p.d0_source, a.marking, provenance));
+        io::write_vtk(vtk_names[r], img,
+                      fmt::format("percolating cluster along {} of {} scale={} delta={} D0={} ({}) marking={} "
+                                  "(lengths in the packing's units) | {}",
+                                  o.axis, p.file, scale_names[run.scale], delta_names[run.delta],
+                                  io::format_number(p.d0), p.d0_source, a.marking, provenance));
       }
-      if (!o.common.quiet && !bar.enabled())
-        std::cerr << fmt::format("percolate: {} delta={} ({}x{}x{}, D0={} from {}): porosity {:.4f} (voxels {:.4f}), "
-                                 "{} clusters, percolates x/y/z {}/{}/{}, R_h {:.4g} D0\n",
-                                 p.file, delta_names[k], a.grid.dims[0], a.grid.dims[1], a.grid.dims[2],
-                                 io::format_number(p.d0), p.d0_source, a.porosity_geometry, a.porosity_voxels,
-                                 a.clusters, int(a.percolates[0]), int(a.percolates[1]), int(a.percolates[2]),
-                                 a.rh_faces_d0);
+      std::string summary = fmt::format(
+          "percolate: {} scale={} delta={} ({}x{}x{}, D0={} from {}): porosity {:.4f} ({}{}), voxels {:.4f}, "
+          "{} clusters, percolates x/y/z {}/{}/{}, R_h {:.4g} D0",
+          p.file, scale_names[run.scale], delta_names[run.delta], a.grid.dims[0], a.grid.dims[1], a.grid.dims[2],
+          io::format_number(p.d0), p.d0_source, a.geometry.porosity, a.geometry.method,
+          a.geometry.exact ? "" : ", upper bound", a.porosity_voxels, a.clusters, int(a.percolates[0]),
+          int(a.percolates[1]), int(a.percolates[2]), a.rh_faces_d0);
+      if (o.timings)
+        summary += fmt::format("; marking {:.3f} s, labelling {:.3f} s", a.seconds_marking, a.seconds_labelling);
+      // Below a progress bar the lines wait until it has finished its own line.
+      if (bar.enabled()) summaries.push_back(std::move(summary));
+      else if (!o.common.quiet || o.timings) std::cerr << summary << '\n';
       bar.update(static_cast<double>(++done));
     }
   }
+  for (const auto& line : summaries) std::cerr << line << '\n';
+  if (inexact_runs > 0) {
+    std::string list;
+    for (const auto& s : inexact) list += (list.empty() ? "" : "; ") + s;
+    std::cerr << fmt::format("percolate: warning: the pair-lens porosity is an upper bound, not exact, in {} "
+                             "packing/scale run(s) (porosity_exact = 0): {}{}\n",
+                             inexact_runs, list, inexact_runs > static_cast<long>(inexact.size()) ? "; ..." : "");
+  }
   csv_out.commit();
+}
+
+// The located message of an InputError without its "file:line: " prefix.
+std::string bare_message(const InputError& e) {
+  const std::string what = e.what(), name = e.file() == "-" ? "<stdin>" : e.file();
+  const std::string prefix = e.line() > 0 ? name + ":" + std::to_string(e.line()) + ": " : name + ": ";
+  return what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
 }
 
 void run_sweep(const Options& o, const std::string& provenance) {
@@ -164,18 +229,65 @@ void run_sweep(const Options& o, const std::string& provenance) {
   checks.require(o.bins >= 1, fmt::format("--bins must be >= 1, got {}", o.bins));
   checks.throw_if_any();
   std::vector<voxel::PercolationSample> samples;
+  // What must be the same in every row binned together, with where it was first seen.
+  struct Seen {
+    std::string value, where;
+  };
+  std::map<std::string, Seen> same;
+  auto require_same = [&](const std::string& what, const std::string& value, const std::string& path, long line) {
+    const std::string where = fmt::format("{}:{}", path == "-" ? "<stdin>" : path, line);
+    auto [it, fresh] = same.try_emplace(what, Seen{value, where});
+    if (!fresh && it->second.value != value)
+      throw InputError(path, line, fmt::format("{} '{}' differs from '{}' at {}: percolate sweep bins one kind of "
+                                               "run at a time (run it per {})", what, value, it->second.value,
+                                               it->second.where, what));
+  };
+  std::map<std::string, std::string> runs_seen;  // file, scale, delta -> where
+  std::set<std::string> scales;
+  const std::vector<std::string> required{"particles", "delta", o.porosity_column, "percolates"};
   for (const auto& path : o.tables) {
-    const auto t = io::read_csv(path);
+    io::CsvTable t;
+    try {
+      t = io::read_csv(path);
+    } catch (const InputError& e) {
+      throw InputError(e.file(), e.line(), "not a percolate CSV (" + bare_message(e) + "); give the CSV rows "
+                                           "percolate writes (columns particles, delta, " + o.porosity_column +
+                                           ", percolates)");
+    }
+    for (const auto& name : required)
+      if (std::find(t.header.begin(), t.header.end(), name) == t.header.end())
+        throw InputError(path, t.header_line, fmt::format("not a percolate CSV: no column '{}' (percolate sweep needs "
+                                                          "particles, delta, {}, percolates)", name, o.porosity_column));
+    auto optional_column = [&](const std::string& name) {
+      const auto it = std::find(t.header.begin(), t.header.end(), name);
+      return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
+    };
     const int cn = t.column("particles"), cd = t.column("delta"), cp = t.column(o.porosity_column),
               cy = t.column("percolates");
+    for (const char* key : {"connectivity", "labelling"})
+      if (const auto* v = t.find_meta(key)) require_same(key, *v, path, 1);
+    const int cfile = optional_column("file"), cscale = optional_column("scale");
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      const long line = t.row_lines[r];
+      for (const char* key : {"kind", "marking", "flow_axis", "porosity_method"})
+        if (const int c = optional_column(key); c >= 0) require_same(key, t.rows[r][c], path, line);
       voxel::PercolationSample s;
-      s.particles = static_cast<int>(t.number(r, cn));
+      s.particles = static_cast<int>(io::parse_integer(t.rows[r][cn], path, line, "a particle count (particles)", 1,
+                                                       std::numeric_limits<int>::max()));
       s.delta = t.number(r, cd);
       s.porosity = t.number(r, cp);
-      const double y = t.number(r, cy);
-      if (y != 0 && y != 1) throw InputError(path, t.row_lines[r], "percolates must be 0 or 1");
-      s.percolates = y == 1;
+      s.percolates = io::parse_integer(t.rows[r][cy], path, line, "0 or 1 (percolates)", 0, 1) == 1;
+      if (cscale >= 0) scales.insert(io::format_number(t.number(r, cscale)));
+      if (cfile >= 0) {
+        const std::string key = t.rows[r][cfile] + "\n" + (cscale >= 0 ? t.rows[r][cscale] : "") + "\n" +
+                                io::format_number(s.delta);
+        const std::string where = fmt::format("{}:{}", path == "-" ? "<stdin>" : path, line);
+        auto [it, fresh] = runs_seen.try_emplace(key, where);
+        if (!fresh)
+          throw InputError(path, line, fmt::format("the run of {} at scale {} and delta {} is also at {}: a table "
+                                                   "given twice?", t.rows[r][cfile],
+                                                   cscale >= 0 ? t.rows[r][cscale] : "?", t.rows[r][cd], it->second));
+      }
       samples.push_back(s);
     }
   }
@@ -183,12 +295,19 @@ void run_sweep(const Options& o, const std::string& provenance) {
   io::AtomicOutput out(o.csv);
   io::CsvWriter csv(out.stream());
   csv.meta("provenance", provenance);
-  csv.meta("porosity", o.porosity_column);
-  csv.header({"particles", "delta", "porosity_low", "porosity_high", "porosity_mean", "packings", "percolating",
+  csv.meta("porosity_column", o.porosity_column);
+  csv.meta("groups", "particles,delta (each group's porosity range cut into " + std::to_string(o.bins) + " bins)");
+  if (!scales.empty()) {
+    std::string list;
+    for (const auto& s : scales) list += (list.empty() ? "" : ",") + s;
+    csv.meta("scales", list + " (binned together: porosity is the variable)");
+  }
+  for (const auto& [key, seen] : same) csv.meta(key, seen.value);
+  csv.header({"particles", "delta", "porosity", "porosity_low", "porosity_high", "packings", "percolating",
               "probability", "probability_error"});
   for (const auto& b : bins)
-    csv.row({std::to_string(b.particles), io::format_number(b.delta), io::format_number(b.porosity_low),
-             io::format_number(b.porosity_high), io::format_number(b.porosity_mean), std::to_string(b.packings),
+    csv.row({std::to_string(b.particles), io::format_number(b.delta), io::format_number(b.porosity_mean),
+             io::format_number(b.porosity_low), io::format_number(b.porosity_high), std::to_string(b.packings),
              std::to_string(b.percolating), io::format_number(b.probability), io::format_number(b.probability_error)});
   out.commit();
 }
@@ -200,14 +319,17 @@ int main(int argc, char** argv) {
     Options o;
     auto app = cli::make_app("percolate",
                              "Pore space of a packing on a lattice of side delta: porosity, connected clusters, "
-                             "percolation per axis, hydraulic radius, the percolating cluster as VTK (thesis 5.2.2).");
+                             "percolation per axis, hydraulic radius, the percolating cluster as VTK (thesis 5.2.2). One CSV row "
+                             "per packing, scale and delta on stdout, a summary line per run on stderr (-q: none).");
     app->add_option("packings", o.inputs, "packing OFF files (shells; '# box' needed) or extended XYZ (.xyz: spheres "
                                           "with a radius column); '-' reads an OFF from stdin");
     app->add_option("-d,--delta", o.deltas, "lattice constant(s) delta [D0], comma separated, e.g. 0.03,0.04,0.05");
     app->add_option("--d0", o.d0, "D0, the unit of delta [length units of the file]; default: a 'D0=' comment of the "
                                   "file, else the volume-equivalent diameter of the mean shell (OFF) or the mean "
                                   "unscaled sphere diameter (XYZ); the CSV says which (d0_source)");
-    app->add_option("--scale", o.scale, "spheres: multiply every radius by this factor (inflation)")->capture_default_str();
+    app->add_option("--scale", o.scales, "spheres: multiply every radius by this factor (inflation), comma separated "
+                                         "for several, e.g. 1.0,1.1,1.2; runs are packings x scales x deltas")
+        ->capture_default_str();
     app->add_option("--marking", o.marking, "shells: 'triangles' (conservative triangle-voxel overlap) or 'vertices' "
                                             "(thesis; leaks when delta < edge length)")->capture_default_str();
     app->add_option("--thickness", o.thickness, "shells: also mark voxels within this max-norm distance of the "
@@ -219,17 +341,25 @@ int main(int argc, char** argv) {
     app->add_flag("--periodic", o.periodic, "label with periodic faces perpendicular to the axis tested (as LB's "
                                             "boundaries); default: not periodic, as scipy.ndimage.label in the thesis");
     app->add_option("--axis", o.axis, "flow axis: the cluster written and measured (R_h) spans it")->capture_default_str();
-    app->add_option("-o,--output", o.vtk, "percolating cluster as binary VTK STRUCTURED_POINTS (1 = cluster, spacing "
-                                          "delta in D0); with several packings or deltas use {name} and {delta}");
-    app->add_option("--csv", o.csv, "CSV output, one row per packing and delta ('-': stdout)")->capture_default_str();
+    app->add_option("-o,--output", o.vtk, "percolating cluster as binary VTK STRUCTURED_POINTS (1 = cluster; origin "
+                                          "and spacing in the packing's length units, so it overlays the packing; "
+                                          "scale, delta and D0 in the title); with several packings, scales or "
+                                          "deltas use {name}, {scale} and {delta}");
+    app->add_option("--csv", o.csv, "CSV output, one row per packing, scale and delta ('-': stdout); column "
+                                    "porosity is the geometric porosity (porosity_method says how)")
+        ->capture_default_str();
+    app->add_flag("--timings", o.timings, "print the wall-clock time of marking and labelling per run on stderr "
+                                          "(never in the CSV, so a run gives the same bytes every time)");
     cli::add_threads_option(*app, o.common);
     cli::add_quiet_option(*app, o.common);
 
     auto* sweep = app->add_subcommand("sweep", "percolation probability vs porosity per N and delta, in porosity bins, "
                                                "from percolate's CSV rows (input of kcfit's sigmoid fit)");
-    sweep->add_option("tables", o.tables, "CSV files written by percolate")->required();
+    sweep->add_option("tables", o.tables, "CSV files written by percolate ('-': stdin); rows are grouped by "
+                                          "particles and delta and binned over porosity, all scales together")
+        ->required();
     sweep->add_option("--bins", o.bins, "porosity bins per (N, delta) over the range of the data")->capture_default_str();
-    sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity_geometry_overlap (spheres: lens-corrected; shells: = porosity_geometry), porosity_geometry (1 - sum V / V_box) or porosity_voxels")
+    sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity (geometric) or porosity_voxels")
         ->capture_default_str();
     sweep->add_option("-o,--output", o.csv, "output CSV ('-': stdout)")->capture_default_str();
 
@@ -240,7 +370,6 @@ int main(int argc, char** argv) {
       run_sweep(o, provenance);
       return 0;
     }
-    if (o.deltas.empty()) throw UsageError("--delta is required");
     run_percolate(o, provenance);
     return 0;
   });
