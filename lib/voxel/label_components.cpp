@@ -157,7 +157,10 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
   std::vector<Word> bits(static_cast<std::size_t>(ny) * nz * words);
   auto row_words = [&](int y, int z) { return bits.data() + (static_cast<std::size_t>(z) * ny + y) * words; };
 
-  const int slabs = std::max(1, std::min(omp_get_max_threads(), nz));
+  // Several slabs per thread, handed out dynamically: when another process slows one thread
+  // down, the others take its slabs (the numbering does not depend on the slab count).
+  const int threads = omp_get_max_threads();
+  const int slabs = std::max(1, std::min(threads == 1 ? 1 : 4 * threads, nz));
   std::vector<int> z_begin(slabs + 1);
   for (int t = 0; t <= slabs; ++t) z_begin[t] = static_cast<int>(1LL * nz * t / slabs);
   auto slab_of = [&](Label i) {
@@ -167,7 +170,7 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
   std::vector<long> roots(slabs, 0);  // roots per slab
 
   // 1. Runs and unions inside each slab; unions never leave the slab, so slabs are independent.
-#pragma omp parallel for schedule(static, 1) num_threads(slabs)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threads, slabs))
   for (int t = 0; t < slabs; ++t) {
     long runs = 0, merged = 0;
     for (int z = z_begin[t]; z < z_begin[t + 1]; ++z)
@@ -270,7 +273,7 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
   std::vector<long> first(slabs + 1, 0);
   for (int t = 0; t < slabs; ++t) first[t + 1] = first[t] + roots[t];
   const long count = first[slabs];
-#pragma omp parallel for schedule(static, 1) num_threads(slabs)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threads, slabs))
   for (int t = 0; t < slabs; ++t) {
     Label next = static_cast<Label>(first[t]);
     for (int z = z_begin[t]; z < z_begin[t + 1]; ++z)
@@ -285,11 +288,11 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
       }
   }
   // 4. Each run start walks up to its root's number and keeps it (negative); then its run is
-  // filled. A parent in an earlier slab may be rewritten by its own thread meanwhile, but only
+  // filled. A parent in an earlier slab may be rewritten by another thread meanwhile, but only
   // to its (negative) number, so the walk ends at the right number; parents are always run
   // starts, so the other voxels are private to their thread. atomic_ref makes the concurrent
   // accesses to run starts defined behaviour (plain moves on x86).
-#pragma omp parallel for schedule(static, 1) num_threads(slabs)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threads, slabs))
   for (int t = 0; t < slabs; ++t) {
     for (int z = z_begin[t]; z < z_begin[t + 1]; ++z)
       for (int y = 0; y < ny; ++y) {
@@ -319,7 +322,7 @@ int label_components(const std::uint8_t* image, std::array<int, 3> dims, std::ve
       }
   }
   // 5. Positive numbers.
-#pragma omp parallel for schedule(static) num_threads(slabs)
+#pragma omp parallel for schedule(static) num_threads(std::min(threads, slabs))
   for (long i = 0; i < total; ++i) L[i] = -L[i];
   return static_cast<int>(count);
 }
