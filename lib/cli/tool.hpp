@@ -141,6 +141,8 @@ class Tool {
   // run_tool). A CLI11 error (unknown option, missing required, extra arguments) and an
   // unknown or missing subcommand are thrown at once as cmp::UsageError with the --help hint;
   // conversion and range problems of the typed options are recorded for finish_checks().
+  // With required subcommands, the first argument not starting with '-' is taken as the
+  // subcommand, so top-level options must be flags (take no value).
   void parse(int argc, char** argv);
   // Records "flag: message" when ok is false (flag empty: the message alone). A flag already
   // reported (say, 'abc' is not an integer) is not reported twice.
