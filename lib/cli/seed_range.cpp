@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 
 #include <charconv>
+#include <filesystem>
 
 namespace cmp::cli {
 
@@ -33,6 +34,14 @@ std::string expand_pattern(const std::string& pattern, const std::string& key, c
   for (auto at = out.find(token); at != std::string::npos; at = out.find(token, at + value.size()))
     out.replace(at, token.size(), value);
   return out;
+}
+
+bool outputs_complete(const std::vector<std::string>& paths) {
+  for (const auto& path : paths) {
+    std::error_code ec;
+    if (path == "-" || !std::filesystem::is_regular_file(path, ec)) return false;
+  }
+  return !paths.empty();
 }
 
 }  // namespace cmp::cli

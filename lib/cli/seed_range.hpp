@@ -13,4 +13,9 @@ std::vector<std::uint64_t> parse_seed_range(const std::string& text, const std::
 // Replaces every "{key}" in pattern by value: ("cell_{seed}.off", "seed", "7") -> "cell_7.off".
 std::string expand_pattern(const std::string& pattern, const std::string& key, const std::string& value);
 
+// True when every path names an existing regular file: for --resume, a seed whose outputs all
+// exist is done, since io::AtomicOutput shows a file under its name only when complete.
+// "-" (stdout) is never complete.
+bool outputs_complete(const std::vector<std::string>& paths);
+
 }  // namespace cmp::cli

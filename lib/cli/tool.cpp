@@ -1,11 +1,18 @@
 #include "cli/tool.hpp"
 
+#include "cli/interrupt.hpp"
+#include "cli/seed_range.hpp"
 #include "core/errors.hpp"
+#include "io/csv.hpp"
+#include "io/parse_number.hpp"
 #include "core/version.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <charconv>
+#include <climits>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -20,6 +27,7 @@ void print_prefixed(const std::string& tool, const std::string& message) {
 }  // namespace
 
 int run_tool(const std::string& tool, const std::function<int()>& body) {
+  install_interrupt_handlers(tool);
   try {
     return body();
   } catch (const CLI::Success&) {
@@ -68,7 +76,7 @@ void parse(CLI::App& app, int argc, char** argv) {
     app.exit(e);
     throw CLI::Success();
   } catch (const CLI::ParseError& e) {
-    throw UsageError(e.what());
+    throw UsageError(std::string(e.what()) + "\nrun '" + app.get_name() + " --help' for the options");
   }
 }
 
@@ -98,6 +106,219 @@ void OptionChecks::throw_if_any() const {
   std::string all;
   for (const auto& p : problems_) all += (all.empty() ? "" : "\n") + p;
   throw UsageError(all);
+}
+
+bool Bounds::contains(double x) const {
+  return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
+}
+
+std::string Bounds::describe() const {
+  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  const auto num = [](double x) { return io::format_number(x); };
+  if (has_lo && has_hi)
+    return fmt::format("must lie in {}{}, {}{}", lo_open ? "(" : "[", num(lo), num(hi), hi_open ? ")" : "]");
+  if (has_lo && lo == 0) return lo_open ? "must be positive" : "must not be negative";
+  if (has_lo) return lo_open ? "must exceed " + num(lo) : "must be at least " + num(lo);
+  if (has_hi) return hi_open ? "must be below " + num(hi) : "must be at most " + num(hi);
+  return "";
+}
+
+namespace {
+// "--spheres" of "-N,--spheres": the name messages use.
+std::string flag_name(const std::string& flags) {
+  std::string first, token;
+  std::istringstream in(flags);
+  while (std::getline(in, token, ',')) {
+    if (token.rfind("--", 0) == 0) return token;
+    if (first.empty()) first = token;
+  }
+  return first;
+}
+
+void record_range(Tool& tool, const std::string& flag, const std::string& text, double x, const Bounds& b) {
+  tool.check(b.contains(x), flag, b.describe() + ", got '" + text + "'");
+}
+
+bool parse_u64(const std::string& s, std::uint64_t& out) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && end == s.data() + s.size() && !s.empty();
+}
+}  // namespace
+
+Tool::Tool(std::string name, std::string purpose) : name_(std::move(name)), app_(make_app(name_, purpose)) {}
+
+CLI::Option* Tool::add_typed(CLI::App& where, const std::string& flags, const std::string& help,
+                             const std::string& type, const std::string& default_text,
+                             std::function<void(Tool&, const std::string&, const std::string&)> convert) {
+  typed_.push_back({nullptr, std::string(), std::move(convert)});
+  auto& t = typed_.back();
+  t.option = where.add_option(flags, t.text, help)
+                 ->type_name(type)
+                 ->default_str(default_text)
+                 ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // the last one given wins
+  return t.option;
+}
+
+CLI::Option* Tool::add_int(CLI::App& where, const std::string& flags, int& value, const std::string& help,
+                           Bounds bounds) {
+  return add_typed(where, flags, help, "INT", std::to_string(value),
+                   [&value, bounds](Tool& tool, const std::string& flag, const std::string& text) {
+                     long long v = 0;
+                     if (!io::try_parse_integer(text, v) || v < INT_MIN || v > INT_MAX)
+                       return tool.check(false, flag, "'" + text + "' is not an integer");
+                     value = static_cast<int>(v);
+                     record_range(tool, flag, text, static_cast<double>(v), bounds);
+                   });
+}
+
+CLI::Option* Tool::add_long(CLI::App& where, const std::string& flags, long& value, const std::string& help,
+                            Bounds bounds) {
+  return add_typed(where, flags, help, "INT", std::to_string(value),
+                   [&value, bounds](Tool& tool, const std::string& flag, const std::string& text) {
+                     long long v = 0;
+                     if (!io::try_parse_integer(text, v) || v < LONG_MIN || v > LONG_MAX)
+                       return tool.check(false, flag, "'" + text + "' is not an integer");
+                     value = static_cast<long>(v);
+                     record_range(tool, flag, text, static_cast<double>(v), bounds);
+                   });
+}
+
+CLI::Option* Tool::add_uint64(CLI::App& where, const std::string& flags, std::uint64_t& value,
+                              const std::string& help) {
+  return add_typed(where, flags, help, "UINT", std::to_string(value),
+                   [&value](Tool& tool, const std::string& flag, const std::string& text) {
+                     std::uint64_t v = 0;
+                     if (!parse_u64(text, v))
+                       return tool.check(false, flag, "'" + text + "' is not a non-negative integer");
+                     value = v;
+                   });
+}
+
+CLI::Option* Tool::add_double(CLI::App& where, const std::string& flags, double& value, const std::string& help,
+                              Bounds bounds) {
+  return add_typed(where, flags, help, "FLOAT", io::format_number(value),
+                   [&value, bounds](Tool& tool, const std::string& flag, const std::string& text) {
+                     double v = 0;
+                     if (!io::try_parse_double(text, v))
+                       return tool.check(false, flag, "'" + text + "' is not a finite number");
+                     value = v;
+                     record_range(tool, flag, text, v, bounds);
+                   });
+}
+
+void Tool::add_common(CLI::App& where, CommonOptions& common, unsigned which) {
+  if (which & kSeed)
+    add_uint64(where, "--seed", common.seed, "seed of the random number generator; same seed, same output");
+  if (which & kThreads)
+    add_int(where, "--threads", common.threads, "OpenMP threads (0: all cores); results do not depend on it",
+            non_negative());
+  if (which & kQuiet) where.add_flag("-q,--quiet", common.quiet, "no progress bar or summary on stderr");
+}
+
+void Tool::add_seed_options(CLI::App& where, SeedOptions& seeds, const std::string& what) {
+  auto* seed = add_uint64(where, "--seed", seeds.seed,
+                          "seed of the random number generator; same seed, same " + what);
+  where.add_option("--seeds", seeds.seeds, "FIRST:LAST: one " + what + " per seed, in parallel; outputs need {seed}")
+      ->type_name("FIRST:LAST")
+      ->excludes(seed);
+  where.add_flag("--resume", seeds.resume,
+                 "skip the seeds whose outputs all exist already (files appear only when complete)");
+}
+
+std::vector<std::uint64_t> Tool::seed_list(const SeedOptions& seeds) {
+  if (seeds.seeds.empty()) return {seeds.seed};
+  try {
+    return parse_seed_range(seeds.seeds, "--seeds");
+  } catch (const UsageError& e) {
+    check(false, "", e.what());
+    return {seeds.seed};
+  }
+}
+
+void Tool::check_seed_pattern(std::size_t seed_count, const std::string& flag, const std::string& pattern,
+                              const std::string& example) {
+  check(seed_count <= 1 || pattern.find("{seed}") != std::string::npos, flag,
+        "must contain {seed} when --seeds names several seeds, e.g. " + flag + " '" + example + "'");
+}
+
+std::string Tool::hint() const {
+  std::string command = name_;
+  for (const auto* sub : app_->get_subcommands()) command += " " + sub->get_name();
+  return "run '" + command + " --help' for the options";
+}
+
+void Tool::parse(int argc, char** argv) {
+  // Help shows no default for a required option ("-N,--spheres INT REQUIRED").
+  for (auto& t : typed_)
+    if (t.option->get_required()) t.option->default_str("");
+  // A subcommand that does not exist: say so and name the real ones (CLI11 would say "A
+  // subcommand is required" or "arguments were not expected").
+  const auto subs = app_->get_subcommands([](const CLI::App*) { return true; });
+  if (!subs.empty() && app_->get_require_subcommand_min() > 0) {
+    std::string names;
+    for (const auto* sub : subs) names += (names.empty() ? "" : ", ") + sub->get_name();
+    bool asks_help = false;
+    const char* first = nullptr;
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h" || arg == "--help-all" || arg == "--version") asks_help = true;
+      if (arg == "--") break;
+      if (!arg.empty() && arg[0] == '-') continue;
+      first = argv[i];
+      break;
+    }
+    bool known = false;
+    for (const auto* sub : subs) known = known || (first && sub->check_name(first));
+    if (first && !known)
+      throw UsageError("unknown subcommand '" + std::string(first) + "'; the subcommands are " + names + "\n" +
+                       hint());
+    if (!first && !asks_help)
+      throw UsageError("a subcommand is required: one of " + names + "\n" + hint());
+  }
+  try {
+    app_->parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    app_->exit(e);
+    throw CLI::Success();
+  } catch (const CLI::CallForAllHelp& e) {
+    app_->exit(e);
+    throw CLI::Success();
+  } catch (const CLI::CallForVersion& e) {
+    app_->exit(e);
+    throw CLI::Success();
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(std::string(e.what()) + "\n" + hint());
+  }
+  for (auto& t : typed_)
+    if (t.option->count() > 0) t.convert(*this, flag_name(t.option->get_name(false, true)), t.text);
+}
+
+void Tool::check(bool ok, const std::string& flag, const std::string& message) {
+  if (ok) return;
+  if (!flag.empty()) {  // one problem per flag: a value that did not convert is not range-checked too
+    for (const auto& p : problems_)
+      if (p.rfind(flag + ": ", 0) == 0) return;
+    problems_.push_back(flag + ": " + message);
+  } else {
+    problems_.push_back(message);
+  }
+}
+
+void Tool::collect(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    std::istringstream lines(e.what());
+    std::string line;
+    while (std::getline(lines, line)) problems_.push_back(line);
+  }
+}
+
+void Tool::finish_checks() const {
+  if (problems_.empty()) return;
+  std::string all;
+  for (const auto& p : problems_) all += p + "\n";
+  throw UsageError(all + hint());
 }
 
 std::string command_line(int argc, char** argv) {

@@ -1,10 +1,39 @@
 #pragma once
 // The command-line conventions of DESIGN.md in one place, so every program gets them alike:
-// CLI11 options, --version, --seed, --threads, --quiet, exit statuses 0/1/2 and every
-// message prefixed with the tool's name.
+// CLI11 options, --version, --seed/--seeds/--resume, --threads, --quiet, exit statuses 0/1/2,
+// every message prefixed with the tool's name, every bad option reported at once under its
+// flag, and SIGINT/SIGTERM handled (cli/interrupt.hpp).
+//
+// A tool's main, with cli::Tool (rndmesh and shellpack are the worked examples):
+//
+//   int main(int argc, char** argv) {
+//     return cli::run_tool("percolate", [&] {
+//       Options o;
+//       cli::Tool tool("percolate", "Voxel percolation analysis of packings.");
+//       auto& app = tool.app();                      // plain CLI11 for strings, flags, subcommands
+//       app.add_option("packings", o.inputs, "OFF or XYZ files ('-': stdin)")->required();
+//       tool.add_double(app, "--scale", o.scale, "radius scale factor", cli::positive());
+//       tool.add_int(app, "--bins", o.bins, "histogram bins", cli::at_least(1));
+//       tool.add_common(app, o.common);              // --seed --threads --quiet (kSeed|kThreads|kQuiet)
+//       tool.parse(argc, argv);                      // CLI11 errors: "tool: msg" + the --help hint, exit 2
+//       tool.check(o.thickness < o.scale, "--thickness", "must be below --scale");  // cross-option rules
+//       tool.finish_checks();                        // every problem at once, exit 2
+//       cli::apply_threads(o.common);
+//       ...
+//     });
+//   }
+//
+// Numbers are bound to a string and converted strictly after parsing (io/parse_number.hpp:
+// "2abc", "0x2", "nan" are refused), then range-checked, each problem recorded as
+// "--flag: 'abc' is not an integer" or "--flag: must be positive, got '-1'". Help shows
+// `--flag INT` or `--flag FLOAT` with the default (none for a required option).
+// The older helpers below (make_app, parse, add_*_option, OptionChecks) remain for the
+// programs not yet moved to Tool.
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <deque>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,9 +42,10 @@ namespace cmp::cli {
 // Exit statuses (DESIGN.md).
 enum ExitStatus : int { kSuccess = 0, kComputationFailed = 1, kBadInput = 2 };
 
-// Runs body() and maps what escapes it to a message on stderr and an exit status:
-// CLI11 parse errors and cmp::UsageError / cmp::InputError -> 2, cmp::ComputationError and
-// anything else -> 1. Each line of a message is prefixed with "tool: ".
+// Installs the SIGINT/SIGTERM handlers (cli/interrupt.hpp), runs body() and maps what escapes
+// it to a message on stderr and an exit status: CLI11 parse errors (with a "run 'tool --help'"
+// line) and cmp::UsageError / cmp::InputError -> 2, cmp::ComputationError and anything else
+// -> 1. Each line of a message is prefixed with "tool: ".
 int run_tool(const std::string& tool, const std::function<int()>& body);
 
 // An App with the toolkit's formatting and a --version flag ("tool <version>").
@@ -46,6 +76,96 @@ class OptionChecks {
   // Throws cmp::UsageError holding every recorded message, one per line, if there are any.
   void throw_if_any() const;
  private:
+  std::vector<std::string> problems_;
+};
+
+// The range a number option must lie in; lo/hi_open exclude the bound. Said in messages as
+// "must be positive", "must be at least 4", "must lie in [1, 14]", "must lie in (0, 1)".
+struct Bounds {
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  bool contains(double x) const;
+  std::string describe() const;  // "must be positive", ...; "" when unbounded
+};
+inline Bounds any_value() { return {}; }
+inline Bounds positive() { return {0, std::numeric_limits<double>::infinity(), true, false}; }
+inline Bounds non_negative() { return {0, std::numeric_limits<double>::infinity(), false, false}; }
+inline Bounds at_least(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, false}; }
+inline Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
+inline Bounds open(double lo, double hi) { return {lo, hi, true, true}; }
+inline Bounds left_open(double lo, double hi) { return {lo, hi, true, false}; }   // (lo, hi]
+inline Bounds right_open(double lo, double hi) { return {lo, hi, false, true}; }  // [lo, hi)
+
+// The --seed/--seeds/--resume trio of tools that make one result per seed.
+struct SeedOptions {
+  std::uint64_t seed = 1;
+  std::string seeds;    // FIRST:LAST, empty for a single run with `seed`
+  bool resume = false;  // skip seeds whose outputs all exist (writes are atomic: they are complete)
+};
+
+// One program's command line: the App, typed number options converted strictly after
+// parsing, and the list of problems reported together (see the example at the top).
+class Tool {
+ public:
+  Tool(std::string name, std::string purpose);
+  CLI::App& app() { return *app_; }
+  const std::string& name() const { return name_; }
+
+  // Number options bound to value (left unchanged when the option is not given), shown in
+  // help as INT or FLOAT with value as the default. Any CLI11 calls (->required(),
+  // ->excludes()) may follow on the returned option.
+  CLI::Option* add_int(CLI::App& where, const std::string& flags, int& value, const std::string& help,
+                       Bounds bounds = {});
+  CLI::Option* add_long(CLI::App& where, const std::string& flags, long& value, const std::string& help,
+                        Bounds bounds = {});
+  CLI::Option* add_uint64(CLI::App& where, const std::string& flags, std::uint64_t& value, const std::string& help);
+  // Doubles must be finite ("nan", "inf" refused) and within bounds.
+  CLI::Option* add_double(CLI::App& where, const std::string& flags, double& value, const std::string& help,
+                          Bounds bounds = {});
+
+  // The common options; which is a bitwise or of the flags below.
+  enum Common : unsigned { kSeed = 1, kThreads = 2, kQuiet = 4 };
+  void add_common(CLI::App& where, CommonOptions& common, unsigned which = kSeed | kThreads | kQuiet);
+  // --seed, --seeds FIRST:LAST (excludes --seed) and --resume; `what` names the result
+  // ("mesh", "packing") in the help.
+  void add_seed_options(CLI::App& where, SeedOptions& seeds, const std::string& what);
+  // The seeds to run: {seeds.seed} or the range. A bad range is recorded as a problem of
+  // --seeds (and {seed.seed} returned) so finish_checks reports it with the rest.
+  std::vector<std::uint64_t> seed_list(const SeedOptions& seeds);
+  // When several seeds run, every per-seed output pattern must contain {seed}: records
+  // "FLAG: must contain {seed} when --seeds names several seeds, e.g. -o 'cell_{seed}.off'".
+  void check_seed_pattern(std::size_t seed_count, const std::string& flag, const std::string& pattern,
+                          const std::string& example);
+
+  // Parses argv. --help/--version print and end with status 0 (CLI::Success through
+  // run_tool). A CLI11 error (unknown option, missing required, extra arguments) and an
+  // unknown or missing subcommand are thrown at once as cmp::UsageError with the --help hint;
+  // conversion and range problems of the typed options are recorded for finish_checks().
+  // With required subcommands, the first argument not starting with '-' is taken as the
+  // subcommand, so top-level options must be flags (take no value).
+  void parse(int argc, char** argv);
+  // Records "flag: message" when ok is false (flag empty: the message alone). A flag already
+  // reported (say, 'abc' is not an integer) is not reported twice.
+  void check(bool ok, const std::string& flag, const std::string& message);
+  // Runs f and records the cmp::UsageError it throws (a library's validate()).
+  void collect(const std::function<void()>& f);
+  // Throws cmp::UsageError holding every recorded problem, one per line, then the hint
+  // "run 'tool [sub] --help' for the options", if there are any.
+  void finish_checks() const;
+  std::size_t problem_count() const { return problems_.size(); }
+
+ private:
+  struct Typed {
+    CLI::Option* option;
+    std::string text;
+    std::function<void(Tool&, const std::string& flag, const std::string& text)> convert;
+  };
+  CLI::Option* add_typed(CLI::App& where, const std::string& flags, const std::string& help, const std::string& type,
+                         const std::string& default_text, std::function<void(Tool&, const std::string&, const std::string&)> convert);
+  std::string hint() const;
+  std::string name_;
+  std::unique_ptr<CLI::App> app_;
+  std::deque<Typed> typed_;  // stable addresses: CLI11 holds pointers to the strings
   std::vector<std::string> problems_;
 };
 

@@ -2,7 +2,10 @@
 
 #include "core/errors.hpp"
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
+#include <pthread.h>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -39,7 +42,57 @@ mode_t process_umask() {
 }
 
 const char* kStdout = "<stdout>";
+
+// The registry: fixed slots, so that a signal handler can walk it without locks or allocation.
+// state: 0 free, 1 being filled, 2 a file, 3 a folder.
+struct Slot {
+  std::atomic<int> state{0};
+  char path[4096];
+};
+Slot g_slots[kMaxTemporaries];
+
+// Blocks SIGINT and SIGTERM in this thread while a temporary is created and registered, so
+// that an interrupt cannot fall between the two and leave the file behind.
+class SignalsBlocked {
+ public:
+  SignalsBlocked() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set, &old_);
+  }
+  ~SignalsBlocked() { pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+ private:
+  sigset_t old_;
+};
 }  // namespace
+
+int register_temporary(const std::string& path, TemporaryPath::Kind kind) {
+  if (path.empty() || path.size() >= sizeof(Slot::path)) return -1;
+  for (int k = 0; k < kMaxTemporaries; ++k) {
+    int expected = 0;
+    if (!g_slots[k].state.compare_exchange_strong(expected, 1)) continue;
+    std::memcpy(g_slots[k].path, path.c_str(), path.size() + 1);
+    g_slots[k].state.store(kind == TemporaryPath::Kind::File ? 2 : 3);
+    return k;
+  }
+  return -1;
+}
+
+void unregister_temporary(int slot) {
+  if (slot >= 0 && slot < kMaxTemporaries) g_slots[slot].state.store(0);
+}
+
+void remove_registered_temporaries() noexcept {
+  for (auto& slot : g_slots)
+    if (slot.state.load() == 2) ::unlink(slot.path);
+  for (int k = kMaxTemporaries - 1; k >= 0; --k)
+    if (g_slots[k].state.load() == 3) ::rmdir(g_slots[k].path);
+}
+
+TemporaryPath::TemporaryPath(const std::string& path, Kind kind) : slot_(register_temporary(path, kind)) {}
+TemporaryPath::~TemporaryPath() { unregister_temporary(slot_); }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
   if (path_ == "-") return;
@@ -48,39 +101,53 @@ AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
   const auto name = target.filename().string();
   if (name.empty() || name == "." || name == "..")
     throw InputError(path_, 0, "cannot write: not a file name");
-  const auto dir = target.parent_path();
+  const auto dir = target.parent_path().string();
+  // The temporary comes at the first write; say now if it could not be made.
+  const char* folder = dir.empty() ? "." : dir.c_str();
+  struct stat st {};
+  if (::stat(folder, &st) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
+  if (!S_ISDIR(st.st_mode)) throw InputError(path_, 0, "cannot write: " + errno_text(ENOTDIR));
+  if (::access(folder, W_OK | X_OK) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
+}
+
+void AtomicOutput::create_temporary() {
+  const std::filesystem::path target(path_);
   // Hidden, in the same folder: rename() is atomic only within one file system.
-  temp_path_ = (dir / ("." + name + ".tmp.XXXXXX")).string();
-  std::vector<char> templ(temp_path_.begin(), temp_path_.end());
+  std::string templ_text = (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  std::vector<char> templ(templ_text.begin(), templ_text.end());
   templ.push_back('\0');
+  SignalsBlocked blocked;
   const int fd = ::mkstemp(templ.data());
-  if (fd < 0) {
-    const int err = errno;
-    temp_path_.clear();
-    throw InputError(path_, 0, "cannot write: " + errno_text(err));
-  }
+  if (fd < 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
   temp_path_ = templ.data();
+  registration_ = register_temporary(temp_path_);
   // mkstemp makes the file 0600; a finished output gets the usual 0644 minus the umask.
   ::fchmod(fd, 0644 & ~process_umask());
   ::close(fd);
   auto file = std::make_unique<std::ofstream>(temp_path_, std::ios::binary | std::ios::trunc);
   if (!*file) {
     const int err = errno;
-    ::unlink(temp_path_.c_str());
-    temp_path_.clear();
+    discard();
     throw InputError(path_, 0, "cannot write: " + errno_text(err ? err : EIO));
   }
   file_ = std::move(file);
 }
 
-AtomicOutput::~AtomicOutput() {
-  if (committed_ || temp_path_.empty()) return;
+void AtomicOutput::discard() {
   file_.reset();  // close before unlinking
-  ::unlink(temp_path_.c_str());
+  if (!temp_path_.empty()) ::unlink(temp_path_.c_str());
+  temp_path_.clear();
+  unregister_temporary(registration_);
+  registration_ = -1;
+}
+
+AtomicOutput::~AtomicOutput() {
+  if (!committed_) discard();
 }
 
 std::ostream& AtomicOutput::stream() {
   if (path_ == "-") return std::cout;
+  if (!file_) create_temporary();
   return *file_;
 }
 
@@ -92,6 +159,7 @@ void AtomicOutput::commit() {
     committed_ = true;
     return;
   }
+  if (!file_) create_temporary();
   auto& file = static_cast<std::ofstream&>(*file_);
   file.flush();
   const bool written = static_cast<bool>(file);
@@ -99,18 +167,19 @@ void AtomicOutput::commit() {
   file.close();
   const int close_err = errno;
   if (!written || file.fail()) {
-    ::unlink(temp_path_.c_str());
-    temp_path_.clear();
+    discard();
     throw InputError(path_, 0, "write error: " + errno_text(close_err ? close_err : EIO));
   }
   // No fsync: the promise is about interrupted runs, not power cuts, and fsync per file would
   // slow sweeps that write thousands of small files.
   if (::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     const int err = errno;
-    ::unlink(temp_path_.c_str());
-    temp_path_.clear();
+    discard();
     throw InputError(path_, 0, "cannot write: " + errno_text(err));
   }
+  unregister_temporary(registration_);
+  registration_ = -1;
+  temp_path_.clear();
   committed_ = true;
 }
 

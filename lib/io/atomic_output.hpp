@@ -1,6 +1,11 @@
 #pragma once
 // Output that appears under its final name only when complete (DESIGN.md: writers write a
 // temporary file in the target folder and rename it). "-" writes to standard output.
+//
+// Every temporary that exists is listed in a process-wide registry, so that an interrupted
+// run can remove them from a signal handler (cli::run_tool installs one for SIGINT and
+// SIGTERM). Other temporaries a tool makes (a folder for gnuplot's output, a scratch file)
+// join the registry through TemporaryPath.
 #include <memory>
 #include <ostream>
 #include <string>
@@ -9,23 +14,59 @@ namespace cmp::io {
 
 class AtomicOutput {
  public:
-  // Creates "<dir>/.<name>.tmp.XXXXXX" next to path (or uses stdout for "-").
+  // Checks the target: "-" means stdout; otherwise the folder must exist and be writable.
+  // The temporary "<dir>/.<name>.tmp.XXXXXX" is created at the first stream() call (so a tool
+  // can open its outputs before a long computation without leaving files while it computes).
   // Throws cmp::InputError(path, 0, ...) when the folder does not exist or is not writable.
   explicit AtomicOutput(std::string path);
   ~AtomicOutput();  // removes the temporary file unless commit() succeeded
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
+  // The stream to write; creates the temporary on the first call. Throws cmp::InputError
+  // when it cannot be created.
   std::ostream& stream();
   // Flushes, checks for write errors, renames onto the final name (permissions 0644 minus
-  // umask). Throws cmp::InputError(path, 0, ...) on failure and leaves no file behind.
+  // umask). Throws cmp::InputError(path, 0, ...) on failure and leaves no file behind. An
+  // output never written commits as an empty file.
   void commit();
   const std::string& path() const { return path_; }
 
  private:
+  void create_temporary();
+  void discard();  // closes and removes the temporary, if any
   std::string path_, temp_path_;
   std::unique_ptr<std::ostream> file_;
+  int registration_ = -1;
   bool committed_ = false;
 };
+
+// A path to remove if the process is interrupted, registered for as long as this object
+// lives (it removes nothing itself when destroyed: the owner removes or renames its file).
+//   io::TemporaryPath guard(".fit.png.tmp.x1y2/fit.png");  // then create the file
+// Directories are removed (rmdir, so they must be empty by then) after every file, so
+// register a folder first and the files in it after. At most kMaxTemporaries paths of up to
+// 4095 bytes are held at once; beyond that a path is not registered (registered() is false).
+class TemporaryPath {
+ public:
+  enum class Kind { File, Directory };
+  explicit TemporaryPath(const std::string& path, Kind kind = Kind::File);
+  ~TemporaryPath();
+  TemporaryPath(const TemporaryPath&) = delete;
+  TemporaryPath& operator=(const TemporaryPath&) = delete;
+  bool registered() const { return slot_ >= 0; }
+
+ private:
+  int slot_;
+};
+inline constexpr int kMaxTemporaries = 256;
+
+// The registry itself: register_temporary returns a slot (-1 when full or the path is too
+// long), unregister_temporary frees it. Thread-safe.
+int register_temporary(const std::string& path, TemporaryPath::Kind kind = TemporaryPath::Kind::File);
+void unregister_temporary(int slot);
+// Unlinks every registered file, then rmdirs every registered folder. Async-signal-safe
+// (only unlink, rmdir and atomics): meant for a signal handler, right before _exit.
+void remove_registered_temporaries() noexcept;
 
 }  // namespace cmp::io

@@ -21,10 +21,18 @@ io::XyzFrame jammed_frame(const JammingResult& r, std::uint64_t seed, const std:
 
 // The CSV of `shellpack jam`: the parameters as `# key=value` lines, then one row per packing
 // (results[k] made from seeds[k]) with phi_J, Z, contacts, pressure, energy, max force, FIRE
-// iterations, size changes, rejected tries by reason and wall time.
+// iterations, size changes and rejected tries by reason; the wall time (`seconds`) only when
+// timings is set, so that by default a seed gives the same bytes on every run.
 void write_jamming_table(std::ostream& out, const std::vector<JammingResult>& results,
                          const std::vector<std::uint64_t>& seeds, const JammingParameters& parameters,
-                         const std::string& provenance);
+                         const std::string& provenance, bool timings = false);
+
+// "8 not isostatic, 3 rattlers" ("none" when all are 0), for progress notes and summaries.
+std::string rejection_counts(int rattlers, int not_isostatic, int no_pressure_window, int fire_cap);
+
+// One closing line for a --seeds run: count, mean and sd of phi_J, mean Z, tries and why the
+// rejected ones were rejected, summed wall time.
+std::string jamming_batch_summary(const std::vector<JammingResult>& results);
 
 // "N = 50: phi_J = 0.62..., Z = ..., P = ..., ..." for stderr.
 std::string jamming_summary(const JammingResult& r);

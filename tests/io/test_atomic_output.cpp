@@ -3,7 +3,13 @@
 
 #include "io_test_support.hpp"
 
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 using namespace cmp;
@@ -94,15 +100,23 @@ TEST_CASE("AtomicOutput reports folders it cannot write", "[atomic_output]") {
     CHECK_THAT(msg, StartsWith(dir.file("sub") + ": cannot write: "));
     CHECK(dir.entries() == std::vector<std::string>{"sub"});
   }
-  SECTION("a folder without write permission") {
-    if (::geteuid() == 0) return;  // root writes anywhere
-    std::filesystem::create_directory(dir.file("ro"));
-    std::filesystem::permissions(
-        dir.file("ro"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
-    const auto path = dir.file("ro/out.txt");
-    CHECK(input_error([&] { AtomicOutput out(path); }) ==
-          path + ": cannot write: Permission denied");
-    std::filesystem::permissions(dir.file("ro"), std::filesystem::perms::owner_all);
+  SECTION("a folder without write permission (as root: a parent that is a regular file)") {
+    // Root writes into any folder, so as root (CI) take a failure no permission bypasses.
+    std::string path, reason;
+    if (::geteuid() == 0) {
+      std::ofstream(dir.file("plain")) << "x";
+      path = dir.file("plain/out.txt");
+      reason = "Not a directory";
+    } else {
+      std::filesystem::create_directory(dir.file("ro"));
+      std::filesystem::permissions(
+          dir.file("ro"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+      path = dir.file("ro/out.txt");
+      reason = "Permission denied";
+    }
+    CHECK(input_error([&] { AtomicOutput out(path); }) == path + ": cannot write: " + reason);
+    if (std::filesystem::exists(dir.file("ro")))
+      std::filesystem::permissions(dir.file("ro"), std::filesystem::perms::owner_all);
   }
   SECTION("an empty name") {
     CHECK_THAT(input_error([&] { AtomicOutput out(""); }), Contains("cannot write"));
@@ -126,4 +140,65 @@ TEST_CASE("AtomicOutput reports a full disk at commit", "[atomic_output]") {
   out.stream().setstate(std::ios::badbit);  // what a failed write leaves behind
   CHECK_THAT(input_error([&] { out.commit(); }), StartsWith(path + ": write error"));
   CHECK(dir.entries().empty());
+}
+
+TEST_CASE("AtomicOutput reports a write the file size limit stops, as root too", "[atomic_output]") {
+  // RLIMIT_FSIZE binds root as well: in a child limited to 4 KiB, writing 64 KiB fails with
+  // EFBIG; commit must say "write error" and leave no file.
+  TempDir dir;
+  const auto path = dir.file("big.txt");
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit{4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    int status = 3;
+    try {
+      AtomicOutput out(path);
+      out.stream() << std::string(65536, 'x');
+      out.commit();
+      status = 4;  // the limit was not noticed
+    } catch (const cmp::InputError& e) {
+      status = std::string(e.what()).rfind(path + ": write error", 0) == 0 ? 0 : 5;
+    }
+    ::_exit(status);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(dir.entries().empty());
+}
+
+TEST_CASE("AtomicOutput creates its temporary at the first write, not before", "[atomic_output]") {
+  TempDir dir;
+  AtomicOutput out(dir.file("late.csv"));
+  CHECK(dir.entries().empty());  // a long computation leaves nothing while it runs
+  out.stream() << "a\n";
+  CHECK(dir.entries().size() == 1);
+  out.commit();
+  CHECK(dir.entries() == std::vector<std::string>{"late.csv"});
+}
+
+TEST_CASE("The temporary registry removes what an interrupted run would leave", "[atomic_output]") {
+  TempDir dir;
+  AtomicOutput out(dir.file("partial.csv"));
+  out.stream() << "half a table\n";
+  std::filesystem::create_directory(dir.file("plot.tmp"));
+  cmp::io::TemporaryPath folder(dir.file("plot.tmp"), cmp::io::TemporaryPath::Kind::Directory);
+  std::ofstream(dir.file("plot.tmp/fit.png")) << "png";
+  cmp::io::TemporaryPath png(dir.file("plot.tmp/fit.png"));
+  CHECK(folder.registered());
+  CHECK(png.registered());
+  std::ofstream(dir.file("keep.txt")) << "not registered";
+  REQUIRE(dir.entries().size() == 3);
+  cmp::io::remove_registered_temporaries();  // what the SIGINT handler calls
+  CHECK(dir.entries() == std::vector<std::string>{"keep.txt"});
+  // A committed output is no longer registered.
+  AtomicOutput done(dir.file("done.csv"));
+  done.stream() << "x\n";
+  done.commit();
+  cmp::io::remove_registered_temporaries();
+  CHECK(std::filesystem::exists(dir.file("done.csv")));
 }

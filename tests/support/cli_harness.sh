@@ -14,15 +14,57 @@ enter_scratch_dir() {
 }
 
 # expect_error STATUS PATTERN cmd...: the command fails with STATUS and exactly one line on
-# stderr that starts with "$cli_tool: " and matches PATTERN, and leaves no output file (out.*,
-# or a temporary .out.*) behind.
+# stderr that starts with "$cli_tool: " and matches PATTERN (besides the hint line "$cli_tool:
+# run '... --help' for the options" that usage errors end with), and leaves no output file
+# (out.*, or a temporary .out.*) behind.
 expect_error() {
   local want=$1 pattern=$2; shift 2
   "$@" >stdout.txt 2>stderr.txt; local got=$?
   [ "$got" -eq "$want" ] || fail "$* exited $got, expected $want; stderr: $(cat stderr.txt)"
-  [ "$(wc -l <stderr.txt)" -eq 1 ] || fail "$*: not one line on stderr: $(cat stderr.txt)"
+  [ "$(grep -vc "^$cli_tool: run '.* --help' for the options\$" stderr.txt)" -eq 1 ] ||
+    fail "$*: not one line on stderr: $(cat stderr.txt)"
   grep -q "^$cli_tool: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
   ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
+}
+
+# on_terminal OUT cmd...: runs cmd with stdin, stdout and stderr on a new pseudo-terminal
+# (CI has none: this makes one), writes what the terminal received to OUT, returns cmd's status.
+on_terminal() {
+  local out=$1; shift
+  /usr/bin/python3 - "$out" "$@" <<'PY'
+import os, pty, sys
+out, argv = sys.argv[1], sys.argv[2:]
+pid, fd = pty.fork()
+if pid == 0:
+    os.execvp(argv[0], argv)
+data = b""
+while True:
+    try:
+        chunk = os.read(fd, 65536)
+    except OSError:
+        break
+    if not chunk:
+        break
+    data += chunk
+_, status = os.waitpid(pid, 0)
+open(out, "wb").write(data)
+sys.exit(os.waitstatus_to_exitcode(status) if hasattr(os, "waitstatus_to_exitcode") else status >> 8)
+PY
+}
+
+# interrupt_run SIGNAL SECONDS cmd...: starts cmd in the background (job control on, so SIGINT
+# is not ignored as it is for background jobs of a script), sends SIGNAL after SECONDS, and
+# returns cmd's exit status; its stderr goes to interrupt.err.
+interrupt_run() {
+  local sig=$1 delay=$2; shift 2
+  set -m
+  "$@" >/dev/null 2>interrupt.err &
+  local pid=$!
+  sleep "$delay"
+  kill -s "$sig" "$pid"
+  wait "$pid"; local got=$?
+  set +m
+  return $got
 }
 
 run_cases() {

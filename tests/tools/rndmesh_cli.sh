@@ -4,6 +4,7 @@
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 rndmesh="$bin/rndmesh"
+cli_script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=rndmesh
 enter_scratch_dir
@@ -56,7 +57,7 @@ case_random_stdout_and_trace() {
   "$rndmesh" random -n 50 --sweeps 2 --anneals 5 --trace trace.csv -q > mesh.off || fail "stdout"
   [ "$(off_counts mesh.off)" = "50 96" ] || fail "stdout counts"
   [ "$(grep -vc '^#' trace.csv)" = 6 ] || fail "trace rows: $(cat trace.csv)"
-  head -2 trace.csv | grep -q "temperature_en" || fail "trace header"
+  grep -v '^#' trace.csv | head -1 | grep -q "temperature_en" || fail "trace header"
 }
 case_stats_csv() {
   "$rndmesh" octa --level 2 -o o.off -q
@@ -109,9 +110,115 @@ case_bad_radius() {
   expect_error 2 "radius" "$rndmesh" random -n 10 --radius -1 -o out.off
   expect_error 2 "radius" "$rndmesh" icosa --level 2 --radius -1 -o out.off
 }
-case_bad_temperatures() { expect_error 2 "T_max" "$rndmesh" random -n 10 --tmin 10 --tmax 1 -o out.off; }
-case_bad_level() { expect_error 2 "level" "$rndmesh" icosa --level 0 -o out.off; }
-case_bad_subcommand() { expect_error 2 "" "$rndmesh" dodeca -o out.off; }
+case_bad_temperatures() { expect_error 2 "--tmax: must be at least --tmin" "$rndmesh" random -n 10 --tmin 10 --tmax 1 -o out.off; }
+case_bad_level() {
+  expect_error 2 "--level: must lie in \[1, 14\], got '0'" "$rndmesh" icosa --level 0 -o out.off
+  expect_error 2 "--level: 'abc' is not an integer" "$rndmesh" icosa --level abc -o out.off
+  expect_error 2 "--points: '2e3' is not an integer" "$rndmesh" random -n 2e3 -o out.off
+  expect_error 2 "--radius: '1x' is not a finite number" "$rndmesh" random -n 20 --radius 1x -o out.off
+}
+case_bad_subcommand() {
+  expect_error 2 "unknown subcommand 'dodeca'; the subcommands are simple, tetra, octa, icosa, random, stats" \
+    "$rndmesh" dodeca -o out.off
+  expect_error 2 "a subcommand is required" "$rndmesh"
+  expect_error 2 "no-such" "$rndmesh" icosa --no-such -o out.off
+  grep -qx "rndmesh: run 'rndmesh icosa --help' for the options" stderr.txt || fail "no help hint: $(cat stderr.txt)"
+}
+case_bad_options_all_at_once() {
+  "$rndmesh" random -n 3 --radius -1 --anneals 0 --step nan -o out.off 2>stderr.txt; [ $? = 2 ] || fail "status"
+  diff - stderr.txt <<'EOT' || fail "messages"
+rndmesh: --points: must be at least 4, got '3'
+rndmesh: --radius: must be positive, got '-1'
+rndmesh: --anneals: must be at least 1, got '0'
+rndmesh: --step: 'nan' is not a finite number
+rndmesh: run 'rndmesh random --help' for the options
+EOT
+  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "left a file"
+}
+case_help_shows_types() {
+  "$rndmesh" random --help | grep -Eq -- "-n,--points INT REQUIRED( |$)" || fail "$("$rndmesh" random --help | grep points)"
+  "$rndmesh" random --help | grep -q -- "--tmax FLOAT=1000" || fail "no --tmax default"
+  "$rndmesh" random --help | grep -q -- "--resume" || fail "no --resume"
+}
+interrupted_case() {  # interrupted_case SIGNAL STATUS
+  interrupt_run "$1" 1 "$rndmesh" random -n 40000 --seeds 1:2 --threads 2 -o 'out_{seed}.off' --trace 'out_{seed}.csv'
+  local got=$?
+  [ "$got" = "$2" ] || fail "exit $got after SIG$1, expected $2: $(cat interrupt.err)"
+  [ "$(cat interrupt.err)" = "rndmesh: interrupted" ] || fail "stderr: $(cat interrupt.err)"
+  [ -z "$(ls -A | grep -v '^interrupt.err$')" ] || fail "left files: $(ls -A)"
+}
+case_interrupt_sigint() { interrupted_case INT 130; }
+case_interrupt_sigterm() { interrupted_case TERM 143; }
+case_seeds_resume() {
+  local opts=(random -n 60 --sweeps 2 --anneals 5 --threads 1 -q)
+  "$rndmesh" "${opts[@]}" --seeds 1:3 -o 'm_{seed}.off' --trace 't_{seed}.csv' || fail "first run"
+  rm m_2.off
+  touch -d '2001-01-01' m_1.off t_1.csv m_3.off t_3.csv
+  "$rndmesh" random -n 60 --sweeps 2 --anneals 5 --threads 1 --seeds 1:3 -o 'm_{seed}.off' --trace 't_{seed}.csv' \
+    --resume 2>err.txt || fail "resume: $(cat err.txt)"
+  grep -q "rndmesh: --resume: 2 of 3 seeds already done" err.txt || fail "stderr: $(cat err.txt)"
+  [ -f m_2.off ] || fail "seed 2 not redone"
+  [ -n "$(find m_2.off t_2.csv -newer m_1.off)" ] || fail "seed 2's files not rewritten"
+  [ -z "$(find m_1.off t_1.csv m_3.off t_3.csv -newer m_2.off)" ] || fail "a complete seed was redone"
+  [ "$(grep -c '^# provenance' t_2.csv)" = 1 ] || fail "trace of seed 2"
+  expect_error 2 "--resume: needs -o FILE" "$rndmesh" random -n 60 --resume
+}
+case_summary_after_progress_bar() {
+  # On a terminal the bar really draws; the summary must start on its own line.
+  on_terminal tty.txt "$rndmesh" random -n 300 --sweeps 20 --anneals 40 -o rnd300.off || fail "run: $(cat tty.txt)"
+  grep -aq "annealing \[" tty.txt || fail "no progress bar drawn on the terminal: $(cat -v tty.txt)"
+  /usr/bin/python3 - <<'PY' || fail "summary glued to the bar: $(cat -v tty.txt)"
+import re, sys
+screen = open("tty.txt", "rb").read().decode()
+# What a terminal shows: a carriage return goes back to column 0 and ESC[K clears the rest.
+lines, line, col = [], [], 0
+i = 0
+while i < len(screen):
+    if screen.startswith("\x1b[K", i):
+        del line[col:]; i += 3; continue
+    c = screen[i]; i += 1
+    if c == "\r": col = 0
+    elif c == "\n": lines.append("".join(line)); line, col = [], 0
+    else:
+        if col < len(line): line[col] = c
+        else: line.append(c)
+        col += 1
+lines.append("".join(line))
+summary = [l for l in lines if "rnd300.off:" in l]
+sys.exit(0 if summary and all(l.startswith("rndmesh: rnd300.off:") for l in summary) else 1)
+PY
+}
+case_same_seed_same_bytes() {
+  # The files of a seeded run are the same bytes on every run and with 1 or 2 threads, the
+  # provenance line (which holds the command line) aside.
+  for run in a b; do
+    for t in 1 2; do
+      "$rndmesh" random -n 150 --sweeps 5 --anneals 10 --seeds 4:5 --threads $t -o "${run}${t}_{seed}.off" \
+        --trace "${run}${t}_{seed}.csv" -q || fail "run $run threads $t"
+    done
+  done
+  for s in 4 5; do
+    for f in a2_$s.off b1_$s.off b2_$s.off; do
+      cmp <(grep -v '^# rndmesh ' a1_$s.off) <(grep -v '^# rndmesh ' $f) || fail "$f differs from a1_$s.off"
+    done
+    for f in a2_$s.csv b1_$s.csv b2_$s.csv; do
+      cmp <(grep -v '^# provenance=' a1_$s.csv) <(grep -v '^# provenance=' $f) || fail "$f differs from a1_$s.csv"
+    done
+  done
+  ! cmp -s a1_4.off a1_5.off || fail "two seeds, one mesh"
+}
+case_trace_names_n_and_seed() {
+  "$rndmesh" random -n 50 --seed 9 --sweeps 2 --anneals 5 --trace tr.csv -o m.off -q || fail "run"
+  grep -qx "# points=50" tr.csv || fail "no points line: $(head tr.csv)"
+  grep -qx "# seed=9" tr.csv || fail "no seed line"
+  # scripts/plot_anneal.gp (make run's anneal.png) puts both in its title
+  local gp="$cli_script_dir/../../scripts/plot_anneal.gp"
+  title=$(gnuplot -e "in='tr.csv'; out='anneal.png'; load '$gp'; print sprintf('N = %s points on the sphere, seed %s', N, seed)" 2>&1) ||
+    fail "gnuplot: $title"
+  [ "$title" = "N = 50 points on the sphere, seed 9" ] || fail "title values: $title"
+  grep -q 'title sprintf("simulated annealing of N = %s points on the sphere, seed %s", N, seed)' "$gp" || fail "title"
+  [ -s anneal.png ] || fail "no figure"
+}
 case_bad_output_folder() { expect_error 2 "no/such/dir/out.off" "$rndmesh" icosa -o no/such/dir/out.off; }
 
 run_cases "$@"

@@ -27,12 +27,12 @@ namespace {
 
 struct Options {
   cli::CommonOptions common;
+  cli::SeedOptions seeding;          // random: --seed, --seeds, --resume
   std::string output = "-";
   int level = 1;
   double radius = 1.0;
   spheremesh::AnnealingParameters annealing;
   std::string trace;                 // random: per-temperature CSV
-  std::string seeds;                 // random: FIRST:LAST, one mesh per seed
   std::vector<std::string> inputs;   // stats
 };
 
@@ -59,10 +59,12 @@ void run_subdivision(const Options& o, spheremesh::Subdivision scheme, const std
   if (!o.common.quiet) std::cerr << "rndmesh: " << summary << "\n";
 }
 
-void write_trace(const std::string& path, const std::string& provenance, const spheremesh::AnnealingResult& r) {
+void write_trace(const std::string& path, const std::string& provenance, const spheremesh::AnnealingParameters& p,
+                 const spheremesh::AnnealingResult& r) {
   io::AtomicOutput out(path);
   io::CsvWriter csv(out.stream());
   csv.meta("provenance", provenance);
+  for (const auto& [key, value] : spheremesh::annealing_fields(p, r)) csv.meta(key, value);
   csv.header({"anneal", "temperature_en", "acceptance", "energy_per_point_en"});
   for (std::size_t i = 0; i < r.steps.size(); ++i) {
     const auto& s = r.steps[i];
@@ -72,17 +74,19 @@ void write_trace(const std::string& path, const std::string& provenance, const s
   out.commit();
 }
 
-void run_random(const Options& o, const std::string& provenance) {
-  // One mesh per seed; seeds are independent Markov chains, run in parallel.
-  const auto seeds = o.seeds.empty() ? std::vector<std::uint64_t>{o.annealing.seed} : cli::parse_seed_range(o.seeds);
-  o.annealing.validate();
-  cli::OptionChecks checks;
-  const bool many = seeds.size() > 1;
-  checks.require(!many || o.output.find("{seed}") != std::string::npos,
-                 "-o must contain {seed} when --seeds names several seeds, e.g. -o 'cell_{seed}.off'");
-  checks.require(!many || o.trace.empty() || o.trace.find("{seed}") != std::string::npos,
-                 "--trace must contain {seed} when --seeds names several seeds");
-  checks.throw_if_any();
+void run_random(const Options& o, const std::vector<std::uint64_t>& all_seeds, const std::string& provenance) {
+  // One mesh per seed; seeds are independent Markov chains, run in parallel. With --resume a
+  // seed whose files all exist is skipped: files appear only complete (io::AtomicOutput).
+  std::vector<std::uint64_t> seeds;
+  for (const auto s : all_seeds) {
+    const std::string seed = std::to_string(s);
+    std::vector<std::string> outputs{cli::expand_pattern(o.output, "seed", seed)};
+    if (!o.trace.empty()) outputs.push_back(cli::expand_pattern(o.trace, "seed", seed));
+    if (!(o.seeding.resume && cli::outputs_complete(outputs))) seeds.push_back(s);
+  }
+  if (seeds.size() < all_seeds.size() && !o.common.quiet)
+    std::cerr << "rndmesh: --resume: " << all_seeds.size() - seeds.size() << " of " << all_seeds.size()
+              << " seeds already done\n";
   const long n = static_cast<long>(seeds.size());
   cli::ProgressBar bar("annealing", static_cast<double>(n) * o.annealing.anneals, o.common.quiet);
   std::atomic<long> anneals_done{0};
@@ -93,7 +97,7 @@ void run_random(const Options& o, const std::string& provenance) {
     const std::string seed = std::to_string(p.seed);
     const auto annealed = spheremesh::anneal_on_sphere(p, {}, [&](int, int) {
       const long done = ++anneals_done;
-      if (omp_get_thread_num() == 0) bar.update(static_cast<double>(done));
+      bar.update(static_cast<double>(done));  // from any thread: the bar locks
     });
     const mesh::TriMesh m{annealed.points, spheremesh::spherical_delaunay(annealed.points)};
     Options single = o;
@@ -101,10 +105,12 @@ void run_random(const Options& o, const std::string& provenance) {
     std::vector<std::string> comments{"method=random"};
     for (const auto& [key, value] : spheremesh::annealing_fields(p, annealed)) comments.push_back(key + "=" + value);
     summaries[k] = write_mesh(single, provenance, m, comments);
+    // Wall time goes to stderr only: the files of a seed are the same bytes on every run.
     summaries[k] += fmt::format(", Monte Carlo {:.2f} s ({:.3g} trial moves/s)", annealed.seconds,
                                 annealed.seconds > 0 ? annealed.attempted / annealed.seconds : 0.0);
-    if (!o.trace.empty()) write_trace(cli::expand_pattern(o.trace, "seed", seed), provenance, annealed);
+    if (!o.trace.empty()) write_trace(cli::expand_pattern(o.trace, "seed", seed), provenance, p, annealed);
   });
+  bar.finish();
   if (!o.common.quiet)
     for (const auto& line : summaries) std::cerr << "rndmesh: " << line << "\n";
 }
@@ -140,9 +146,10 @@ void run_stats(const Options& o, const std::string& provenance) {
 int main(int argc, char** argv) {
   return cli::run_tool("rndmesh", [&] {
     Options o;
-    auto app = cli::make_app("rndmesh", "Triangulated sphere meshes and their quality metrics (thesis Appendix A).");
+    cli::Tool tool("rndmesh", "Triangulated sphere meshes and their quality metrics (thesis Appendix A).");
+    auto* app = &tool.app();
     app->require_subcommand(1);
-    cli::add_quiet_option(*app, o.common);
+    tool.add_common(*app, o.common, cli::Tool::kQuiet);
 
     std::vector<std::pair<CLI::App*, spheremesh::Subdivision>> schemes;
     for (const auto& [name, scheme, what] :
@@ -151,50 +158,54 @@ int main(int argc, char** argv) {
           std::tuple{"octa", spheremesh::Subdivision::Octahedron, "octahedron, quadrisection per level"},
           std::tuple{"icosa", spheremesh::Subdivision::Icosahedron, "icosahedron, quadrisection per level"}}) {
       auto* sub = app->add_subcommand(name, std::string("iterative sphere mesh: ") + what);
-      sub->add_option("-l,--level", o.level, "subdivision level; 1 is the base polyhedron")->check(CLI::Range(1, 14));
-      sub->add_option("-r,--radius", o.radius, "sphere radius [length units]");
+      tool.add_int(*sub, "-l,--level", o.level, "subdivision level; 1 is the base polyhedron", cli::closed(1, 14));
+      tool.add_double(*sub, "-r,--radius", o.radius, "sphere radius [length units]", cli::positive());
       sub->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
-      cli::add_quiet_option(*sub, o.common);
+      tool.add_common(*sub, o.common, cli::Tool::kQuiet);
       schemes.emplace_back(sub, scheme);
     }
 
     auto& a = o.annealing;
     auto* random = app->add_subcommand("random", "N annealed random points on the sphere + spherical Delaunay (A.2.2)");
-    random->add_option("-n,--points", a.points, "number of vertices N (>= 4)")->required();
-    random->add_option("-r,--radius", a.radius, "sphere radius R [length units]; r_v = 2R/sqrt(N)");
-    random->add_option("--tmax", a.t_max, "first annealing temperature [energy units]");
-    random->add_option("--tmin", a.t_min, "last annealing temperature (T_end) [energy units]");
-    random->add_option("--anneals", a.anneals, "number of temperatures, exponentially spaced");
-    random->add_option("--sweeps", a.sweeps_per_anneal, "Monte Carlo sweeps (N trial moves each) per temperature");
-    random->add_option("--epsilon", a.epsilon, "energy scale of the repulsive LJ-8 pair potential [energy units]");
-    random->add_option("--cutoff", a.cutoff_sigmas, "pair cut-off [sigma = 2 r_v]");
-    random->add_option("--step", a.step_sigmas, "largest trial displacement per axis [sigma]");
-    auto* seed = random->add_option("--seed", a.seed, "seed of the random number generator; same seed, same mesh");
-    random->add_option("--seeds", o.seeds, "FIRST:LAST: one mesh per seed, in parallel; -o and --trace need {seed}")
-        ->excludes(seed);
-    cli::add_threads_option(*random, o.common);
+    tool.add_int(*random, "-n,--points", a.points, "number of vertices N", cli::at_least(4))->required();
+    tool.add_double(*random, "-r,--radius", a.radius, "sphere radius R [length units]; r_v = 2R/sqrt(N)", cli::positive());
+    tool.add_double(*random, "--tmax", a.t_max, "first annealing temperature [energy units]", cli::positive());
+    tool.add_double(*random, "--tmin", a.t_min, "last annealing temperature (T_end) [energy units]", cli::positive());
+    tool.add_int(*random, "--anneals", a.anneals, "number of temperatures, exponentially spaced", cli::at_least(1));
+    tool.add_int(*random, "--sweeps", a.sweeps_per_anneal, "Monte Carlo sweeps (N trial moves each) per temperature",
+                 cli::non_negative());
+    tool.add_double(*random, "--epsilon", a.epsilon, "energy scale of the repulsive LJ-8 pair potential [energy units]",
+                    cli::positive());
+    tool.add_double(*random, "--cutoff", a.cutoff_sigmas, "pair cut-off [sigma = 2 r_v]", cli::positive());
+    tool.add_double(*random, "--step", a.step_sigmas, "largest trial displacement per axis [sigma]", cli::positive());
+    tool.add_seed_options(*random, o.seeding, "mesh");
+    tool.add_common(*random, o.common, cli::Tool::kThreads);
     random->add_option("--trace", o.trace, "also write temperature, acceptance and energy per anneal to this CSV");
     random->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
-    cli::add_quiet_option(*random, o.common);
+    tool.add_common(*random, o.common, cli::Tool::kQuiet);
 
     auto* stats = app->add_subcommand("stats", "quality metrics (A.3) of closed triangle meshes, one CSV row per file");
     stats->add_option("meshes", o.inputs, "OFF files ('-': stdin)")->required();
     stats->add_option("-o,--output", o.output, "output CSV file ('-': stdout)");
-    cli::add_threads_option(*stats, o.common);
-    cli::add_quiet_option(*stats, o.common);
+    tool.add_common(*stats, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
-    cli::parse(*app, argc, argv);
+    tool.parse(argc, argv);
+    std::vector<std::uint64_t> seeds;
+    if (random->parsed()) {
+      tool.check(a.t_max >= a.t_min, "--tmax", fmt::format("must be at least --tmin ({} < {})", a.t_max, a.t_min));
+      seeds = tool.seed_list(o.seeding);
+      tool.check_seed_pattern(seeds.size(), "-o", o.output, "cell_{seed}.off");
+      if (!o.trace.empty()) tool.check_seed_pattern(seeds.size(), "--trace", o.trace, "anneal_{seed}.csv");
+      tool.check(!o.seeding.resume || o.output != "-", "--resume", "needs -o FILE (a mesh on stdout cannot be resumed)");
+      if (tool.problem_count() == 0) tool.collect([&] { a.validate(); });
+    }
+    tool.finish_checks();
     cli::apply_threads(o.common);
     const std::string provenance = cli::provenance("rndmesh", argc, argv);
 
     for (const auto& [sub, scheme] : schemes)
-      if (sub->parsed()) {
-        cli::OptionChecks checks;
-        checks.require(o.radius > 0 && std::isfinite(o.radius), fmt::format("--radius must be positive, got {}", o.radius));
-        checks.throw_if_any();
-        run_subdivision(o, scheme, provenance);
-      }
-    if (random->parsed()) run_random(o, provenance);
+      if (sub->parsed()) run_subdivision(o, scheme, provenance);
+    if (random->parsed()) run_random(o, seeds, provenance);
     if (stats->parsed()) run_stats(o, provenance);
     return 0;
   });
