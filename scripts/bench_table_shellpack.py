@@ -2,8 +2,8 @@
 
 SECTIONS = {
     "shellpack_jam.csv": lambda r: (
-        "shellpack jam: one jammed packing, thesis protocol, max|f| 1e-15, 1 core",
-        f"N = {r['N']}, " + ("rattler-free isostatic (with retries)" if r['accepted'] == "rattler_free_isostatic" else "first packing"),
+        f"`{r['command']}`: one jammed packing, max|f| 1e-15",
+        f"N = {r['N']}, " + ("defaults: rattler-free isostatic (with retries)" if r['accepted'] == "rattler_free_isostatic" else "any jammed packing accepted"),
         f"{float(r['seconds_per_packing']):.3g} s per packing ({float(r['rejected_per_packing']):.1f} rejected tries each), "
         f"{float(r['particle_iterations_per_s']) / 1e6:.1f} M particle-iterations/s",
         "(thesis code: not reported)"),
