@@ -25,7 +25,7 @@ k = len(rows)
 its = sum(int(r["fire_iterations"]) for r in rows)
 rejected = sum(int(r["rejected_tries"]) for r in rows)
 phi = sum(float(r["phi_J"]) for r in rows) / k
-print(f"jam,{n},{k},1e-15,{label},{wall / k:.4g},{wall:.4g},{its},{n * its / wall:.4g},{its / wall:.4g},{phi:.4f},{rejected / k:.2f},\"{command}\"")
+print(f"jam,{n},{k},1e-15,{label},{wall / k:.4g},{wall:.4g},{its},{n * its / wall:.4g},{its / wall:.4g},{phi:.4f},{rejected / k:.2f},\"{command.strip()}\"")
 PY
 }
 {
