@@ -9,12 +9,14 @@ work=$(mktemp -d)
 repeat=${BENCH_REPEAT:-2}
 bin="$build/bin"
 "$bench/bench_fit" data >"$work/kc.csv"
+"$bin/shellpack" jam -N 50 --seed 1 -q -o "$work/jam.xyz" --csv /dev/null
 
 # name|what it runs|command ({T}: the thread count)
 cases=(
   "fire_hertz_4096|FIRE + Hertz forces, 4096 spheres, phi 0.66, max force 1e-12|OMP_NUM_THREADS={T} $bench/bench_spheres fire 4096 0.66 1e-12 1"
   "percolate_marking|percolate marking: 50 shells x 2562 vertices, delta 0.03|$bench/bench_voxel voxelise {T}"
   "percolate_labelling|percolate labelling: 256^3 random image, porosity 0.35|$bench/bench_voxel label 256 0.35 {T}"
+  "percolate_cli|percolate on a jammed packing of 50 spheres, --scale 1.1 --delta 0.01|$bin/percolate $work/jam.xyz --scale 1.1 --delta 0.01 --threads {T} -q --csv /dev/null"
   "rndmesh_seeds|rndmesh random -n 300 --seeds 1:4|$bin/rndmesh random -n 300 --seeds 1:4 --threads {T} -q -o $work/m_{seed}.off"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )
