@@ -57,7 +57,7 @@ jamming-figure: deps all
 percolation-figure: deps all
 	@scripts/percolation_figure.sh $(BUILD) $(OUT)/figures
 
-# The demo pipeline of DESIGN.md with every tool that exists so far.
+# The demo pipeline (scripts/demo.sh): every tool that exists so far, outputs in $(OUT)/demo/.
 run: deps all
 	@scripts/demo.sh $(BUILD) $(OUT)/demo
 

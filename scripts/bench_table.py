@@ -12,7 +12,7 @@ def rows(path):
 
 out, machine, stamp = Path(sys.argv[1]), sys.argv[2], sys.argv[3]
 print(f"Measured by `make bench` on {machine}, {stamp}.\n")
-print("| work | size | figure | reference (BENCHMARKS.md) |")
+print("| work | size | figure | reference |")
 print("|---|---|---|---|")
 # Each tool's rows come from scripts/bench_table_<tool>.py, a SECTIONS map from a CSV file
 # of its bench script to a row formatter; files that are absent are skipped.

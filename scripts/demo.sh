@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make run: the demo pipeline of DESIGN.md with every tool that exists so far.
+# make run: the demo pipeline, every tool that exists so far chained on plain files.
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/demo}

@@ -27,6 +27,6 @@ cat >>"$out/README.txt" <<EOT
   kc_fixed_fit.csv, power_fit.csv, power_fixed_fit.csv   the other laws of Table S5.1 (kcfit)
   tortuosity_fit.csv, hydraulic_radius_fit.csv           tau_H and R_h laws (kcfit)
   percolation_fit.csv/.png sigmoid of the percolation probability, maximum likelihood (kcfit)
-  threshold_fit.csv/.png   phi_c(delta) = phi_c* + A delta^beta, digest 6(c) points (kcfit)
+  threshold_fit.csv/.png   phi_c(delta) = phi_c* + A delta^beta, Table S5.1's N = 50 law (kcfit)
   (kcfit inputs are SYNTHETIC sample tables from data/kcfit until percolate/lbflow feed it)
 EOT

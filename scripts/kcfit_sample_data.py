@@ -27,7 +27,7 @@ with open(f"{out}/flow_synthetic.csv", "w") as f:
 
 with open(f"{out}/threshold_synthetic.csv", "w") as f:
     f.write(head)
-    f.write("# law=phi_c(delta) = 0.035 + 3.67 delta^1.1, rounded to 4 decimals (digest 6(c))\n")
+    f.write("# law=phi_c(delta) = 0.035 + 3.67 delta^1.1, Table S5.1's N = 50 law, rounded to 4 decimals\n")
     f.write("delta,phi_c\n")
     for d, p in [(0.03, 0.1125), (0.04, 0.1414), (0.05, 0.1710), (0.06, 0.2012), (0.07, 0.2319)]:
         f.write(f"{d},{p}\n")

@@ -79,7 +79,7 @@ std::vector<Model> make_models() {
     k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
     k.title = "{/Symbol k} = C {/Symbol f}^3 / (1 - {/Symbol f})^2";
     k.formula = "C x^3 / (1 - x)^2";
-    k.source = "classical Kozeny-Carman (thesis L801, Fig. S5.5 A-B)";
+    k.source = "classical Kozeny-Carman (thesis 5.3.4, Fig. S5.5 A-B)";
     k.params = {C};
     k.value = [](double x, const double* p) { return p[0] * x * rh2(x); };
     k.gradient = [](double x, const double* p, double* g) { g[0] = x * rh2(x); };
@@ -148,7 +148,7 @@ std::vector<Model> make_models() {
     k.y_columns = {"permeability_delta2", "permeability_d02", "permeability"};
     k.title = "{/Symbol k} = C ({/Symbol f} - {/Symbol f}_c)^e";
     k.formula = "C (x - phi_c)^e";
-    k.source = "power-law ansatz kappa ~ dphi^e (thesis L801, Table S5.1 model iii)";
+    k.source = "power-law ansatz kappa ~ dphi^e (thesis 5.3.4, Table S5.1 model iii)";
     k.params = {C, phi_c, {"e", "exponent", 2.0}};
     k.value = [](double x, const double* p) { return shifted_power(x, p, p[2], 1.0); };
     k.gradient = [](double x, const double* p, double* g) { shifted_power_gradient(x, p, p[2], 1.0, g, true); };

@@ -1,5 +1,5 @@
 #pragma once
-// The laws of thesis Chapter 5 that kcfit fits (digest 6(a)), as one registry: a name, the
+// The laws of thesis Chapter 5 that kcfit fits (5.3.4, 5.5.4-5.5.6, Table S5.1), as one registry: a name, the
 // parameters with their starting values and bounds, the value and its analytic gradient in
 // the parameters, and the domain of the abscissa. kcfit --list-models prints this table.
 #include <functional>
@@ -71,7 +71,7 @@ const Model& find_model(const std::string& name);
 
 // Exponent 0.76 = -2 x (-0.38): tau_H^-2 with tau_H ~ (phi - phi_c)^-0.38 (thesis Eq. 5.8).
 inline constexpr double kTortuosityExponent = -0.38;
-// 2.52 = 1.76 + 0.76: the fixed-exponent form (thesis L960, n_c ~ dphi^1.76 of 5.5.5).
+// 2.52 = 1.76 + 0.76: the fixed-exponent form (model ii of Table S5.1 and 5.5.6, n_c ~ dphi^1.76 of 5.5.5).
 inline constexpr double kFixedKcExponent = 2.52;
 
 }  // namespace cmp::fit

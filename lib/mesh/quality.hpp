@@ -12,7 +12,7 @@ struct MeshQuality {
   double dual_area_min = 0, dual_area_max = 0;
   double angle_min = 0, angle_max = 0;  // radians, over all triangle corners
   double radius_ratio_mean = 0;         // mean of 2 r_in / r_out (a distribution summary)
-  double low_quality_fraction = 0;      // fraction of triangles with 2 r_in / r_out < 0.5 (L1125)
+  double low_quality_fraction = 0;      // fraction of triangles with 2 r_in / r_out < 0.5 (the rule of thumb of A.4.2)
 };
 
 // All of MeshQuality in one O(#V + #F) pass. Vertices in no triangle are ignored in q_area.

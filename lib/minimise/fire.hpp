@@ -1,6 +1,6 @@
 #pragma once
 // FIRE, the fast inertial relaxation engine (Bitzek et al., PRL 97, 170201, 2006), as the
-// thesis runs it (Algorithm 4, L1705-1725; parameters of 5.5.1, L815): velocity Verlet with
+// thesis runs it (Algorithm 4 of B.4.1; parameters of 5.5.1): velocity Verlet with
 // unit mass, then the velocity is turned towards the force, the time step grows while the
 // power P = v.F stays positive and the system restarts from rest when it turns negative.
 //

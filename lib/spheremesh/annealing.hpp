@@ -20,7 +20,7 @@ struct AnnealingParameters {
   double epsilon = 1.0;         // energy scale of the LJ-8 repulsion
   double cutoff_sigmas = 3.0;   // r_c in units of sigma = 2 r_v
   // Trial displacement: uniform in [-s, s] per Cartesian axis, then back onto the sphere. The
-  // thesis is silent (Algorithm 2 is lost); its author's code draws +-0.25 sigma (digest 1(a)).
+  // thesis is silent (Algorithm 2 is lost); its author's public code draws +-0.25 sigma.
   double step_sigmas = 0.25;
   std::uint64_t seed = 1;
 
@@ -55,7 +55,7 @@ struct AnnealingResult {
 inline constexpr double kLennardJonesPrefactor = 4.0;
 
 // Pair energy u(r) = 4 eps [(sigma/r)^8 - (sigma/r_c)^8] for r < r_c, 0 beyond: the repulsive
-// part of the LJ 8-4 potential, shifted to vanish at the cut-off (A.2.2, digest 1(d).3).
+// part of the LJ 8-4 potential, shifted to vanish at the cut-off (A.2.2).
 double pair_energy(double r, double sigma, double cutoff, double epsilon);
 
 // Total pair energy of points by brute force, O(N^2): the reference the fast path is tested on.

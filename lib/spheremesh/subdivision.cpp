@@ -109,7 +109,7 @@ void quadrisect(Polyhedron& p) {
 }
 
 // Splits every triangle at the midpoint of its longest edge. Two triangles sharing an edge
-// agree on whether it is their longest (digest 1(a)), so no node is left hanging; near-ties
+// agree on whether it is their longest, so no node is left hanging; near-ties
 // are broken by vertex index so that both sides decide alike.
 void bisect_longest_edges(Polyhedron& p) {
   MidpointCache mid(p.points);

@@ -25,7 +25,7 @@ long subdivision_face_count(Subdivision scheme, int level);
 // The mesh at `level` (1 = the base polyhedron) on the sphere of `radius` centred at the
 // origin. Triangles are flat (chordal), new nodes are chord midpoints projected radially
 // after every level, faces oriented outward. The Simple cube's face diagonals all meet at the
-// corners (1,1,1) and (-1,-1,-1): the only pattern that reproduces Table A.1 (digest 1(a)).
+// corners (1,1,1) and (-1,-1,-1): the only pattern that reproduces Table A.1.
 // Throws cmp::UsageError for level < 1 or radius <= 0.
 mesh::TriMesh subdivided_sphere(Subdivision scheme, int level, double radius = 1.0);
 

@@ -1,9 +1,9 @@
 #pragma once
-// The Hertz contact law between elastic spheres (thesis B.60, 5.5.1 L819; digest 0.1):
+// The Hertz contact law between elastic spheres (thesis Eq. B.60 of B.2.5, and 5.5.1):
 //   F = (4/3) E* sqrt(R*) h^(3/2),   U = (8/15) E* sqrt(R*) h^(5/2),
 // h = R_i + R_j - |x_i - x_j| the overlap, 1/R* = 1/R_i + 1/R_j, and for two spheres of one
 // material 1/E* = 2 (1 - nu^2) / E. The force pushes the spheres apart (the printed minus sign
-// would pull them together; digest 0.1).
+// of B.60 and 5.5.1, with R along R_i - R_j, would pull them together).
 #include <cmath>
 
 namespace cmp::spheres {

@@ -1,5 +1,5 @@
 #pragma once
-// Structure of sphere packings (thesis Ch. 4, Fig. 4.3; digest 3(a-9)): the radial
+// Structure of sphere packings (thesis Ch. 4, Fig. 4.3): the radial
 // distribution function of centres, contact numbers, rattlers and contact forces.
 #include "spheres/hertz.hpp"
 #include "spheres/sphere_packing.hpp"

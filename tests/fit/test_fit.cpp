@@ -1,5 +1,5 @@
 // Fits of synthetic data: parameters recovered within the reported errors for both losses
-// (digest 6(c)), the threshold extrapolation, fixed parameters, and the failures.
+// (Eq. 5.8 with Table S5.1's phi_c = 0.146, gamma = 0.83), the threshold extrapolation, fixed parameters, and the failures.
 #include "core/errors.hpp"
 #include "core/random.hpp"
 #include "fit/bootstrap.hpp"
@@ -82,7 +82,7 @@ TEST_CASE("synthetic data of every model recover the parameters within the repor
   }
 }
 
-TEST_CASE("digest 6(c) kc-percolation with log-normal noise recovers phi_c 0.146 and gamma 0.83", "[fit]") {
+TEST_CASE("Table S5.1 kc-percolation with log-normal noise recovers phi_c 0.146 and gamma 0.83", "[fit]") {
   const auto& m = fit::find_model("kc-percolation");
   const auto d = synthetic(m, {50, 0.146, 0.83}, 0.16, 0.45, 120, 0.15, true, 7);
   fit::FitOptions o;
@@ -95,7 +95,7 @@ TEST_CASE("digest 6(c) kc-percolation with log-normal noise recovers phi_c 0.146
   CHECK_FALSE(r.at_bound);
 }
 
-TEST_CASE("digest 6(c) threshold extrapolation returns 0.035 3.67 1.1", "[fit]") {
+TEST_CASE("Table S5.1 threshold law points return 0.035 3.67 1.1", "[fit]") {
   const auto& m = fit::find_model("threshold");
   const std::vector<double> delta{0.03, 0.04, 0.05, 0.06, 0.07};
   SECTION("points exactly on the law") {
@@ -106,7 +106,7 @@ TEST_CASE("digest 6(c) threshold extrapolation returns 0.035 3.67 1.1", "[fit]")
     CHECK(r.value[1] == Approx(3.67).epsilon(1e-7));
     CHECK(r.value[2] == Approx(1.1).epsilon(1e-7));
   }
-  SECTION("the digest's points, rounded to 4 decimals") {
+  SECTION("the law's points rounded to 4 decimals") {
     const std::vector<double> phi{0.1125, 0.1414, 0.1710, 0.2012, 0.2319};
     const auto r = fit::fit(m, delta, phi, {});
     // The rounding (up to 5e-5) moves the optimum by less than Table S5.1's errors

@@ -58,7 +58,7 @@ TEST_CASE("the registry holds the laws of Table S5.1 with the printed exponents"
   const auto& tau = fit::find_model("tortuosity");
   CHECK(tau.params[2].fixed_by_default);
   CHECK(tau.params[2].start == -0.38);
-  // Threshold: phi_c(0.04) = 0.141 with the N = 50 values (digest 6(d)1: A = 3.67, not 3.76).
+  // Threshold: phi_c(0.04) = 0.141 with the N = 50 values (Table S5.1's A = 3.67, not the 3.76 of 5.5.6, which gives 0.144).
   const double t[] = {0.035, 3.67, 1.1};
   CHECK(fit::find_model("threshold").value(0.04, t) == Approx(0.1414).margin(1e-4));
   // Sigmoid is 1/2 at phi_c.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Interoperability of lib/io with the programs users open our files in (DESIGN.md): ASE reads
+# Interoperability of lib/io with the programs users open our files in: ASE reads
 # our extended XYZ, meshio our OFF and binary VTK, and our readers take what ASE and meshio
 # write. test_io writes and reads the files (hidden Catch2 cases [.interop], [.interop-read]),
 # io_readers.py runs the Python side.

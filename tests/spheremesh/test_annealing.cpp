@@ -19,7 +19,7 @@ namespace {
 AnnealingParameters thesis_defaults(int n, std::uint64_t seed) {
   AnnealingParameters p;
   p.points = n;
-  p.radius = 2.5;  // Table A.5's node counts need R = 2.5 (digest 1(d).1)
+  p.radius = 2.5;  // Table A.5's node counts need R = 2.5 (and floor), not the R = 2 of its caption
   p.seed = seed;
   return p;
 }

@@ -12,11 +12,11 @@ using spheremesh::Subdivision;
 TEST_CASE("Eq. A.7 on icosahedral meshes", "[curvature][thesis]") {
   const auto coarse = spheremesh::subdivided_sphere(Subdivision::Icosahedron, 1, 2.0);
   const auto r1 = spheremesh::sphere_mesh_report(coarse.V, coarse.F);
-  CHECK(r1.curvature_median == Approx(1.276).margin(0.001));  // digest 1(a) [check]
+  CHECK(r1.curvature_median == Approx(1.276).margin(0.001));  // Eq. A.7 worked by hand
   CHECK(r1.curvature_min == Approx(r1.curvature_max));        // all 30 edges alike
   const auto fine = spheremesh::subdivided_sphere(Subdivision::Icosahedron, 6, 2.0);
   const auto r6 = spheremesh::sphere_mesh_report(fine.V, fine.F);
-  // digest 1(a) [check]: mean 1.53, range 1.31-2.10 on fine meshes: the 3/2 bias of Eq. A.7
+  // Fine meshes: mean 1.53, range 1.31-2.10, the 3/2 bias of Eq. A.7 (centroids (h1 + h2)/3 apart)
   CHECK(r6.curvature_mean == Approx(1.527).margin(0.002));
   CHECK(r6.curvature_min == Approx(1.309).margin(0.002));
   CHECK(r6.curvature_max == Approx(2.115).margin(0.002));
@@ -28,7 +28,7 @@ TEST_CASE("Eq. A.7 on icosahedral meshes", "[curvature][thesis]") {
 TEST_CASE("Eq. A.7 on Simple meshes overestimates R up to about 5-fold", "[curvature][thesis]") {
   const auto m5 = spheremesh::subdivided_sphere(Subdivision::Simple, 5, 1.0);
   const auto r5 = spheremesh::sphere_mesh_report(m5.V, m5.F);
-  CHECK(r5.curvature_max == Approx(4.95).margin(0.02));  // digest 1(a) [check]
+  CHECK(r5.curvature_max == Approx(4.95).margin(0.02));  // the "up to 5-fold" of A.4.3
   const auto m7 = spheremesh::subdivided_sphere(Subdivision::Simple, 7, 1.0);
   const auto r7 = spheremesh::sphere_mesh_report(m7.V, m7.F);
   CHECK(r7.curvature_max == Approx(5.71).margin(0.02));
