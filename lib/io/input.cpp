@@ -38,6 +38,25 @@ class Input::Buffer : public std::streambuf {
     return {gptr(), static_cast<std::size_t>(egptr() - gptr())};
   }
 
+  // The bytes up to the next '\n' (not kept) into line, scanning the buffer a chunk at a
+  // time. end: nothing was left; too_long: more than max bytes before the line break.
+  Input::LineRead read_line(std::string& line, std::size_t max) {
+    line.clear();
+    bool any = false;
+    while (true) {
+      if (gptr() == egptr() && underflow() == traits_type::eof())
+        return any ? Input::LineRead::line : Input::LineRead::end;
+      any = true;
+      char* begin = gptr();
+      char* newline = static_cast<char*>(std::memchr(begin, '\n', static_cast<std::size_t>(egptr() - begin)));
+      char* stop = newline ? newline : egptr();
+      if (line.size() + static_cast<std::size_t>(stop - begin) > max) return Input::LineRead::too_long;
+      line.append(begin, stop);
+      setg(eback(), newline ? newline + 1 : egptr(), egptr());
+      if (newline) return Input::LineRead::line;
+    }
+  }
+
   std::uint64_t pulled() const { return pulled_; }
   std::uint64_t buffered() const { return static_cast<std::uint64_t>(egptr() - gptr()); }
 
@@ -191,6 +210,10 @@ void Input::fail_format(const std::string& expected) {
                      "expected " + expected + ", got " + quote_token(format_text_));
   throw InputError(path_, format_line_,
                    "expected " + expected + ", the content is " + std::string(format_name(f)));
+}
+
+Input::LineRead Input::read_line(std::string& line, std::size_t max) {
+  return buffer_->read_line(line, max);
 }
 
 std::optional<std::uint64_t> Input::bytes_left() const {

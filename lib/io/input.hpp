@@ -50,6 +50,11 @@ class Input {
   // is neither blank nor a comment (at most kMaxHeadBytes), keeping them for stream().
   // Call before reading anything else.
   InputFormat format();
+  // Reads the bytes up to the next '\n' (dropped) into line: LineRead::line, or end when
+  // nothing is left, or too_long when more than max bytes come before the line break (they
+  // are not consumed). For the line reader; mixing it with stream() is fine.
+  enum class LineRead { line, end, too_long };
+  LineRead read_line(std::string& line, std::size_t max);
   // Throws cmp::InputError at the line that told the format (line 0 for an empty input):
   // "expected <expected>, got '<that line>'" for an unknown format, "..., the content is CSV"
   // for a known one, "line longer than ..." when that line passes kMaxLineBytes.

@@ -71,21 +71,13 @@ std::istream& LineReader::stream() {
 
 bool LineReader::next() {
   tokens_valid_ = false;
-  line_.clear();
-  auto& in = input_->stream();
-  auto* buf = in.rdbuf();
-  using traits = std::char_traits<char>;
-  int c = buf->sbumpc();
-  if (c == traits::eof()) return false;
+  const auto got = input_->read_line(line_, kMaxLineBytes);
+  if (got == Input::LineRead::end) return false;
   ++line_number_;
-  while (c != traits::eof() && c != '\n') {
-    if (line_.size() >= kMaxLineBytes)
-      fail(fmt::format("line longer than {} bytes (the limit of every reader): not a text file "
-                       "of this format?",
-                       kMaxLineBytes));
-    line_.push_back(static_cast<char>(c));
-    c = buf->sbumpc();
-  }
+  if (got == Input::LineRead::too_long)
+    fail(fmt::format("line longer than {} bytes (the limit of every reader): not a text file "
+                     "of this format?",
+                     kMaxLineBytes));
   if (!line_.empty() && line_.back() == '\r') line_.pop_back();  // files from Windows
   if (!seen_content_ && !blank()) seen_content_ = true;
   return true;
