@@ -10,7 +10,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
 
-.PHONY: all deps configure test test-asan fuzz bench tables jamming-figure percolation-figure run install clean
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure run install clean
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -49,6 +49,7 @@ FUZZ_SECONDS ?= 30
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_READERS := off xyz csv vtk packing
 FUZZ_PACKAGES := clang libclang-rt-14-dev
+.PHONY: fuzz
 fuzz:
 	@missing=""; for p in $(FUZZ_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
