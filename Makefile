@@ -8,7 +8,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
-  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio
+  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
 
 .PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure run install clean clean-results
 
@@ -39,6 +39,40 @@ test: deps all
 # The same tests under AddressSanitizer and UBSan (slower; not part of CI).
 test-asan: deps
 	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMP_SANITIZE=ON"
+
+# libFuzzer on every reader of lib/io (fuzz/): builds $(FUZZ_BUILD) with Debian's clang (ASan,
+# UBSan; libclang-rt-14-dev holds libFuzzer for clang 14, installed here when missing, as
+# make deps does) and runs each target for FUZZ_SECONDS from the seeds of fuzz/corpus/<reader>
+# with fuzz/dict/<reader>.dict. New inputs go to $(FUZZ_BUILD)/corpus, crashes to
+# $(FUZZ_BUILD)/artifacts (the run stops at the first).
+FUZZ_SECONDS ?= 30
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_READERS := off xyz csv vtk packing
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+.PHONY: fuzz
+fuzz:
+	@missing=""; for p in $(FUZZ_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make fuzz: installing$$missing"; \
+	  if [ "$$(id -u)" -eq 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMP_FUZZ=ON -DBUILD_TESTING=OFF $(FUZZ_CMAKE_FLAGS)
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_READERS))
+	@mkdir -p $(FUZZ_BUILD)/artifacts
+	@for r in $(FUZZ_READERS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$r; \
+	  echo "make fuzz: $$r for $(FUZZ_SECONDS) s"; \
+	  $(FUZZ_BUILD)/fuzz/fuzz_$$r -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	    -dict=fuzz/dict/$$r.dict -artifact_prefix=$(FUZZ_BUILD)/artifacts/$$r- \
+	    $(FUZZ_BUILD)/corpus/$$r fuzz/corpus/$$r 2>$(FUZZ_BUILD)/fuzz_$$r.log \
+	    || { tail -40 $(FUZZ_BUILD)/fuzz_$$r.log; echo "make fuzz: $$r failed (log: $(FUZZ_BUILD)/fuzz_$$r.log)"; exit 1; }; \
+	  grep -E '^stat::number_of_executed_units|^Done' $(FUZZ_BUILD)/fuzz_$$r.log | sed "s/^/  $$r: /"; \
+	done
 
 # Performance figures for the README's benchmark table (written to $(OUT)/bench/).
 bench: deps all

@@ -1,6 +1,7 @@
 #include "io/csv.hpp"
 
 #include "core/errors.hpp"
+#include "io/input.hpp"
 #include "io/line_reader.hpp"
 #include "io/parse_number.hpp"
 
@@ -37,6 +38,10 @@ std::vector<std::string> parse_record(LineReader& in) {
           if (!in.next())
             throw InputError(in.path(), start, "unterminated quoted field (no closing '\"')");
           field += '\n';
+          if (field.size() > kMaxLineBytes)
+            throw InputError(in.path(), start,
+                             fmt::format("quoted field longer than {} bytes (the line limit)",
+                                         kMaxLineBytes));
           line = in.line();
           i = 0;
           continue;
@@ -100,8 +105,22 @@ double CsvTable::number(std::size_t row, int column) const {
                       "a number in column '" + header[column] + "'");
 }
 
+long long CsvTable::integer(std::size_t row, int column, long long lo, long long hi) const {
+  if (row >= rows.size() || column < 0 || static_cast<std::size_t>(column) >= header.size())
+    throw std::out_of_range(fmt::format("CsvTable::integer({}, {}) outside a {} by {} table", row,
+                                        column, rows.size(), header.size()));
+  return parse_integer(trim(rows[row][column]), file, row_lines[row],
+                       "an integer in column " + quote_token(header[column]), lo, hi);
+}
+
 CsvTable read_csv(const std::string& path) {
-  LineReader in(path);
+  Input input(path);
+  return read_csv(input);
+}
+
+CsvTable read_csv(Input& input) {
+  LineReader in(input);
+  const auto& path = in.path();
   CsvTable t;
   t.file = path;
   bool have_header = false;
@@ -123,7 +142,8 @@ CsvTable read_csv(const std::string& path) {
     if (!have_header) {
       std::unordered_set<std::string> seen;
       for (const auto& name : fields)
-        if (!seen.insert(name).second) in.fail("column '" + name + "' appears twice in the header");
+        if (!seen.insert(name).second)
+          in.fail("column " + quote_token(name) + " appears twice in the header");
       t.header = std::move(fields);
       t.header_line = line;
       have_header = true;

@@ -30,12 +30,20 @@ struct CsvTable {
   // The cell as a finite double (spaces around it allowed); throws cmp::InputError with
   // file:line when it is not one, std::out_of_range for a row or column past the table.
   double number(std::size_t row, int column) const;
+  // The cell as a whole decimal integer within [lo, hi] (spaces around it allowed): "1e300",
+  // "2.5" or "99999999999" in an int column are cmp::InputError with file:line; throws
+  // std::out_of_range as number().
+  long long integer(std::size_t row, int column, long long lo, long long hi) const;
 };
+
+class Input;
 
 // Strict reader: every row must have as many fields as the header, header names are unique,
 // quotes are balanced. Throws cmp::InputError(file, line, what) otherwise, "empty file" for a
 // file without a header. "-" reads stdin.
 CsvTable read_csv(const std::string& path);
+// Same, from an opened input.
+CsvTable read_csv(Input& input);
 
 // Streams a table: meta lines, then the header, then rows (all rows same width as header).
 class CsvWriter {

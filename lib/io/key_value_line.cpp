@@ -1,6 +1,7 @@
 #include "io/key_value_line.hpp"
 
 #include "core/errors.hpp"
+#include "io/line_reader.hpp"
 
 #include <stdexcept>
 
@@ -34,7 +35,7 @@ KeyValues parse_key_values(std::string_view text, const std::string& file, long 
   char close = 0;
   const auto finish = [&] {
     if (!any) return;
-    if (key.empty()) throw InputError(file, line, "'=" + value + "' without a key");
+    if (key.empty()) throw InputError(file, line, quote_token("=" + value) + " without a key");
     out.emplace_back(std::move(key), in_value ? std::move(value) : std::string("T"));
     key.clear(), value.clear();
     in_value = any = false;

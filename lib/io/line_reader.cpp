@@ -1,11 +1,11 @@
 #include "io/line_reader.hpp"
 
 #include "core/errors.hpp"
+#include "io/input.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <iostream>
-#include <sys/stat.h>
+#include <fmt/format.h>
+
+#include <algorithm>
 
 namespace cmp::io {
 
@@ -34,39 +34,50 @@ std::vector<std::string_view> split_whitespace(std::string_view text) {
 }
 
 std::string quote_token(std::string_view token) {
-  constexpr std::size_t kMax = 40;
-  if (token.size() <= kMax) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, kMax)) + "...'";
+  constexpr std::size_t kMax = 60;
+  std::size_t keep = std::min(token.size(), kMax);
+  // Do not cut inside a UTF-8 sequence (continuation bytes are 10xxxxxx).
+  if (keep < token.size())
+    while (keep > 0 && (static_cast<unsigned char>(token[keep]) & 0xC0) == 0x80) --keep;
+  std::string out = "'";
+  for (const char ch : token.substr(0, keep)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7F) {
+      out += fmt::format("\\x{:02X}", c);
+    } else if (c == '\\') {
+      out += "\\\\";
+    } else {
+      out += ch;
+    }
+  }
+  if (keep < token.size()) out += "...";
+  return out + "'";
 }
 
-LineReader::LineReader(std::string path) : path_(std::move(path)) {
-  if (path_ == "-") {
-    in_ = &std::cin;
-    return;
-  }
-  // ifstream opens a folder without complaint and then reads nothing: say what it is instead.
-  struct stat st {};
-  if (::stat(path_.c_str(), &st) != 0)
-    throw InputError(path_, 0, std::string("cannot open: ") + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw InputError(path_, 0, "cannot open: Is a directory");
-  errno = 0;
-  file_.open(path_, std::ios::binary);
-  if (!file_) {
-    const int err = errno;
-    throw InputError(path_, 0,
-                     std::string("cannot open: ") + (err ? std::strerror(err) : "unknown error"));
-  }
-  in_ = &file_;
+LineReader::LineReader(std::string path)
+    : owned_(std::make_unique<Input>(std::move(path))), input_(owned_.get()) {}
+
+LineReader::LineReader(Input& input) : input_(&input) {}
+
+LineReader::~LineReader() = default;
+
+const std::string& LineReader::path() const {
+  return input_->path();
+}
+
+std::istream& LineReader::stream() {
+  return input_->stream();
 }
 
 bool LineReader::next() {
   tokens_valid_ = false;
-  if (!std::getline(*in_, line_)) {
-    if (in_->bad()) fail("read error");
-    line_.clear();
-    return false;
-  }
+  const auto got = input_->read_line(line_, kMaxLineBytes);
+  if (got == Input::LineRead::end) return false;
   ++line_number_;
+  if (got == Input::LineRead::too_long)
+    fail(fmt::format("line longer than {} bytes (the limit of every reader): not a text file "
+                     "of this format?",
+                     kMaxLineBytes));
   if (!line_.empty() && line_.back() == '\r') line_.pop_back();  // files from Windows
   if (!seen_content_ && !blank()) seen_content_ = true;
   return true;
@@ -96,12 +107,12 @@ bool LineReader::comment() const {
 }
 
 void LineReader::fail(const std::string& what) const {
-  throw InputError(path_, line_number_, what);
+  throw InputError(path(), line_number_, what);
 }
 
 void LineReader::fail_end(const std::string& expected) const {
-  if (!seen_content_) throw InputError(path_, 0, "empty file");
-  throw InputError(path_, line_number_, "unexpected end of file: " + expected);
+  if (!seen_content_) throw InputError(path(), 0, "empty file");
+  throw InputError(path(), line_number_, "unexpected end of file: " + expected);
 }
 
 }  // namespace cmp::io

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "io/atomic_output.hpp"
+#include "io/input.hpp"
 #include "io/line_reader.hpp"
 #include "io/parse_number.hpp"
 
@@ -43,6 +44,7 @@ class CommentParser {
       std::string text = in_.line().substr(in_.line().find('#') + 1);
       if (!text.empty() && text[0] == ' ') text.erase(0, 1);
       off_.comments.push_back(std::move(text));
+      off_.comment_lines.push_back(in_.line_number());
       return;
     }
     if (!before_counts)
@@ -54,6 +56,8 @@ class CommentParser {
   }
 
   long shells_line() const { return shells_line_; }
+  // The '# shells' vertex counts added up in 64 bits (they may not fit an int).
+  long long shell_vertex_sum() const { return shell_vertex_sum_; }
 
  private:
   void once(long& seen, std::string_view word) {
@@ -87,22 +91,25 @@ class CommentParser {
   void shells(const std::vector<std::string_view>& w) {
     once(shells_line_, "shells");
     if (w.size() < 2) in_.fail("expected '# shells K n1 ... nK'");
-    const int k = parse_int(w[1], in_.path(), in_.line_number(), "the shell count K");
+    const auto k = parse_integer(w[1], in_.path(), in_.line_number(), "the shell count K");
     if (k < 1) in_.fail("the shell count K must be positive, got " + quote_token(w[1]));
-    if (static_cast<long>(w.size()) != k + 2L)
+    if (static_cast<unsigned long long>(k) != w.size() - 2)
       in_.fail(fmt::format("'# shells {}' announces {} vertex counts, the line has {}", k, k,
                            w.size() - 2));
     auto& counts = off_.packing.shell_vertex_counts;
-    for (int i = 0; i < k; ++i) {
-      const int n = parse_int(w[i + 2], in_.path(), in_.line_number(), "a shell vertex count");
+    for (long long i = 0; i < k; ++i) {
+      const auto n = parse_integer(w[i + 2], in_.path(), in_.line_number(),
+                                   "a shell vertex count", LLONG_MIN, INT_MAX);
       if (n < 1) in_.fail("shell vertex count must be positive, got " + quote_token(w[i + 2]));
-      counts.push_back(n);
+      counts.push_back(static_cast<int>(n));
+      shell_vertex_sum_ += n;  // at most 2^20 counts below 2^31: no overflow in 64 bits
     }
   }
 
   LineReader& in_;
   OffFile& off_;
   long box_line_ = 0, periodic_line_ = 0, shells_line_ = 0;
+  long long shell_vertex_sum_ = 0;
 };
 
 // Reads up to the next line holding data, passing comment lines to the parser.
@@ -148,20 +155,57 @@ std::vector<int> shell_vertex_offsets(const PackingInfo& packing) {
   return offsets;
 }
 
+namespace {
+
+// What the first word of an OFF file says: the Geomview prefixes [ST][C][N]OFF. Colours,
+// normals and texture coordinates are read as numbers and dropped.
+struct OffDialect {
+  bool normals = false, colours = false, texture = false;
+};
+
+OffDialect parse_dialect(LineReader& in, std::string_view word) {
+  OffDialect d;
+  if (!word.ends_with("OFF")) in.fail("expected 'OFF' on the first line, got " + quote_token(word));
+  auto prefix = word.substr(0, word.size() - 3);
+  if (prefix.starts_with("ST")) d.texture = true, prefix.remove_prefix(2);
+  if (prefix.starts_with("C")) d.colours = true, prefix.remove_prefix(1);
+  if (prefix.starts_with("N")) d.normals = true, prefix.remove_prefix(1);
+  if (!prefix.empty())
+    in.fail("unsupported OFF variant " + quote_token(word) +
+            ": OFF, COFF, NOFF, CNOFF and STOFF (3D, ASCII) are read");
+  return d;
+}
+
+// Field counts a vertex line may have: x y z [nx ny nz] [r g b [a]] [s t].
+bool vertex_fields_ok(const OffDialect& d, std::size_t n) {
+  const std::size_t base = 3 + (d.normals ? 3 : 0) + (d.texture ? 2 : 0);
+  return d.colours ? n == base + 3 || n == base + 4 : n == base;
+}
+
+std::string vertex_form(const OffDialect& d) {
+  return fmt::format("x y z{}{}{}", d.normals ? " nx ny nz" : "", d.colours ? " r g b [a]" : "",
+                     d.texture ? " s t" : "");
+}
+
+}  // namespace
+
 OffFile read_off(const std::string& path) {
-  LineReader in(path);
+  Input input(path);
+  return read_off(input);
+}
+
+OffFile read_off(Input& input) {
+  LineReader in(input);
   OffFile off;
   CommentParser comments(in, off);
   if (!next_data(in, comments, true)) in.fail_end("expected the 'OFF' line");
   auto tokens = data_tokens(in.line());
-  if (tokens[0] != "OFF") {
-    if (tokens[0].ends_with("OFF"))
-      in.fail("unsupported OFF variant " + quote_token(tokens[0]) +
-              ": only plain 'OFF' (ASCII, no colours or normals) is read");
-    in.fail("expected 'OFF' on the first line, got " + quote_token(tokens[0]));
-  }
+  if (tokens.empty()) in.fail("expected 'OFF' on the first line");
+  const auto dialect = parse_dialect(in, tokens[0]);
   // The counts may follow "OFF" on the same line ("OFF 8 12 0") or have a line of their own.
   tokens.erase(tokens.begin());
+  if (tokens.size() == 1 && tokens[0] == "BINARY")
+    in.fail("binary OFF ('OFF BINARY') is not supported: write it as ASCII");
   if (tokens.empty()) {
     if (!next_data(in, comments, true)) in.fail_end("expected the counts line 'nV nF nE'");
     tokens = data_tokens(in.line());
@@ -176,27 +220,39 @@ OffFile read_off(const std::string& path) {
       static_cast<int>(parse_integer(tokens[1], file, line, "the face count", 0, INT_MAX));
   parse_integer(tokens[2], file, line, "the edge count", 0);
 
-  const auto offsets = shell_vertex_offsets(off.packing);
-  if (!offsets.empty() && offsets.back() != nv)
+  if (comments.shells_line() && comments.shell_vertex_sum() != nv)
     throw InputError(file, comments.shells_line(),
                      fmt::format("'# shells' vertex counts add up to {}, but the file has {} "
                                  "vertices",
-                                 offsets.back(), nv));
+                                 comments.shell_vertex_sum(), nv));
+  // A vertex line takes at least 6 bytes ("0 0 0\n"), a face line 8 ("3 0 1 2\n").
+  const auto least = 6ULL * static_cast<unsigned long long>(nv) + 8ULL * static_cast<unsigned>(nf);
+  // A claim past the end of a regular file is refused at once when it is large (no reading
+  // megabytes to find out); a small one is read and reported where the file ends.
+  if (const auto left = input.bytes_left(); left && least > *left && least > kMaxLineBytes)
+    in.fail(fmt::format("the counts line claims {} vertices and {} faces, at least {} bytes; "
+                        "the file has {} bytes left",
+                        nv, nf, least, *left));
+  const auto offsets = shell_vertex_offsets(off.packing);
 
   // Grow as lines arrive rather than trusting the counts line with a huge allocation.
+  constexpr int kReserve = 1 << 16;
   std::vector<double> xyz;
-  xyz.reserve(3 * static_cast<std::size_t>(std::min(nv, 1 << 20)));
+  xyz.reserve(3 * static_cast<std::size_t>(std::min(nv, kReserve)));
   for (int i = 0; i < nv; ++i) {
     if (!next_data(in, comments, false))
       in.fail_end(fmt::format("expected {} vertices, got {}", nv, i));
     tokens = data_tokens(in.line());
-    if (tokens.size() != 3)
-      in.fail(fmt::format("expected a vertex 'x y z', got {} fields", tokens.size()));
-    for (const auto t : tokens)
-      xyz.push_back(parse_double(t, file, in.line_number(), "a coordinate"));
+    if (!vertex_fields_ok(dialect, tokens.size()))
+      in.fail(fmt::format("expected a vertex '{}', got {} fields", vertex_form(dialect),
+                          tokens.size()));
+    for (std::size_t k = 0; k < 3; ++k)
+      xyz.push_back(parse_double(tokens[k], file, in.line_number(), "a coordinate"));
+    for (std::size_t k = 3; k < tokens.size(); ++k)
+      parse_double(tokens[k], file, in.line_number(), "a number (normal, colour or texture)");
   }
   std::vector<int> ijk;
-  ijk.reserve(3 * static_cast<std::size_t>(std::min(nf, 1 << 20)));
+  ijk.reserve(3 * static_cast<std::size_t>(std::min(nf, kReserve)));
   const auto shell = [&](int v) {
     return std::upper_bound(offsets.begin(), offsets.end(), v) - offsets.begin();
   };
@@ -210,8 +266,10 @@ OffFile read_off(const std::string& path) {
           fmt::format("face with {} vertices: triangles are required (triangulate the "
                       "mesh first)",
                       n));
-    if (tokens.size() != 4)
-      in.fail(fmt::format("expected a face '3 i j k', got {} fields", tokens.size()));
+    // "3 i j k", or with a colour as MeshLab writes it: "3 i j k r g b [a]".
+    if (tokens.size() != 4 && tokens.size() != 7 && tokens.size() != 8)
+      in.fail(fmt::format("expected a face '3 i j k' or '3 i j k r g b [a]', got {} fields",
+                          tokens.size()));
     if (nv == 0) in.fail("face in a file without vertices");
     int v[3];
     for (int k = 0; k < 3; ++k) {
@@ -219,6 +277,8 @@ OffFile read_off(const std::string& path) {
           parse_integer(tokens[k + 1], file, in.line_number(), "a vertex index", 0, nv - 1));
       ijk.push_back(v[k]);
     }
+    for (std::size_t k = 4; k < tokens.size(); ++k)
+      parse_double(tokens[k], file, in.line_number(), "a colour component");
     if (!offsets.empty() && (shell(v[1]) != shell(v[0]) || shell(v[2]) != shell(v[0])))
       in.fail(
           fmt::format("face {} {} {} uses vertices of shells {}, {} and {}: each shell's "

@@ -1,5 +1,9 @@
 #pragma once
 // OFF (Object File Format), ASCII, triangles only: the mesh format of the toolkit.
+// The dialects other programs write are read too, their extras checked as numbers and
+// dropped: COFF (per-vertex colours "x y z r g b [a]", as MeshLab writes them), NOFF and
+// CNOFF (normals), STOFF (texture coordinates), and per-face colours "3 i j k r g b [a]"
+// (integers 0-255 or floats 0-1) in any of them.
 //   OFF
 //   # comment lines (anywhere before the counts line, and between records)
 //   nV nF nE
@@ -31,12 +35,20 @@ struct OffFile {
   mesh::FaceMatrix F;
   PackingInfo packing;
   std::vector<std::string> comments;  // other comment lines, without the leading "# "
+  std::vector<long> comment_lines;    // the line of each comment (for messages)
 };
+
+class Input;
 
 // Strict reader: wrong counts, a face index out of range, a non-number, a truncated file,
 // a face that is not a triangle, NaN/Inf coordinates, inconsistent packing lines all throw
-// cmp::InputError with the file and line. "-" reads standard input.
+// cmp::InputError with the file and line. "-" reads standard input. Every count is checked
+// before anything is allocated: '# shells' counts add up in 64 bits and must match nV, and a
+// regular file must be large enough for the vertex and face lines the counts line claims
+// (from a pipe, memory grows as lines arrive).
 OffFile read_off(const std::string& path);
+// Same, from an opened input (e.g. standard input whose format was told from its content).
+OffFile read_off(Input& input);
 
 // Writes atomically (see AtomicOutput). Comments go right after the OFF line as "# <text>",
 // then the packing lines when packing is given. Coordinates round-trip exactly. Throws

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "io/atomic_output.hpp"
+#include "io/input.hpp"
 #include "io/line_reader.hpp"
 #include "io/parse_number.hpp"
 
@@ -14,7 +15,6 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
-#include <sys/stat.h>
 
 namespace cmp::io {
 
@@ -59,6 +59,88 @@ Eigen::Vector3d three_numbers(LineReader& in, const std::vector<std::string_view
   return v;
 }
 
+constexpr unsigned long long kMaxPoints = 1ULL << 40;
+
+// Size in bytes of a VTK legacy data type, 0 for one this reader does not know.
+std::size_t vtk_type_size(const std::string& type) {
+  if (type == "double" || type == "long" || type == "unsigned_long" || type == "vtkidtype" ||
+      type == "vtktypeint64" || type == "vtktypeuint64")
+    return 8;
+  if (type == "float" || type == "int" || type == "unsigned_int") return 4;
+  if (type == "short" || type == "unsigned_short") return 2;
+  if (type == "char" || type == "unsigned_char" || type == "bit") return 1;
+  return 0;
+}
+
+// One big-endian binary value of the given type as a double.
+double decode_big_endian(const unsigned char* b, const std::string& type) {
+  const auto size = vtk_type_size(type);
+  std::uint64_t u = 0;
+  for (std::size_t i = 0; i < size; ++i) u = (u << 8) | b[i];
+  if (type == "double") return std::bit_cast<double>(u);
+  if (type == "float") return std::bit_cast<float>(static_cast<std::uint32_t>(u));
+  if (type == "int") return static_cast<std::int32_t>(u);
+  if (type == "short") return static_cast<std::int16_t>(u);
+  if (type == "char") return static_cast<std::int8_t>(u);
+  if (type == "long" || type == "vtkidtype" || type == "vtktypeint64")
+    return static_cast<double>(static_cast<std::int64_t>(u));
+  return static_cast<double>(u);
+}
+
+// A FIELD block "FIELD name n" and its n arrays "name components tuples type" with their
+// values; arrays of one value go into info.field_data, others are read and dropped.
+void read_field(LineReader& in, const std::vector<std::string_view>& head, VtkInfo& info) {
+  if (head.size() != 3) in.fail("expected 'FIELD name n' (n arrays)");
+  const auto arrays =
+      parse_integer(head[2], in.path(), in.line_number(), "the number of FIELD arrays", 0, 1 << 16);
+  for (long long a = 0; a < arrays; ++a) {
+    const auto t = keyword_line(in, "a FIELD array 'name components tuples type'");
+    if (t.size() != 4)
+      in.fail(fmt::format("expected a FIELD array 'name components tuples type', got {} fields",
+                          t.size()));
+    const std::string name(t[0]);
+    const auto components =
+        parse_integer(t[1], in.path(), in.line_number(), "the components of a FIELD array", 1, 1 << 20);
+    const auto tuples = parse_integer(t[2], in.path(), in.line_number(),
+                                      "the tuples of a FIELD array", 0, 1LL << 40);
+    const auto type = lower(t[3]);
+    const auto size = vtk_type_size(type);
+    if (!size) in.fail("FIELD array type " + quote_token(t[3]) + " is not supported");
+    const auto count = static_cast<unsigned long long>(components) * static_cast<unsigned long long>(tuples);
+    double first = 0;
+    if (info.binary) {
+      const auto bytes = count * size;  // below 2^20 * 2^40 * 8 = 2^63
+      if (const auto left = in.input().bytes_left(); left && bytes > *left)
+        in.fail(fmt::format("unexpected end of file: FIELD array {} needs {} bytes, the file has {} "
+                            "left",
+                            quote_token(name), bytes, *left));
+      unsigned char chunk[1 << 12];
+      for (unsigned long long done = 0; done < bytes;) {
+        const auto n = std::min<unsigned long long>(sizeof chunk, bytes - done);
+        in.stream().read(reinterpret_cast<char*>(chunk), static_cast<std::streamsize>(n));
+        if (static_cast<unsigned long long>(in.stream().gcount()) != n)
+          in.fail(fmt::format("unexpected end of file in the values of FIELD array {}",
+                              quote_token(name)));
+        if (done == 0) first = decode_big_endian(chunk, type);
+        done += n;
+      }
+    } else {
+      unsigned long long got = 0;
+      while (got < count) {
+        if (!in.next())
+          in.fail_end(fmt::format("expected {} values of FIELD array {}", count, quote_token(name)));
+        for (const auto token : in.tokens()) {
+          if (got == count)
+            in.fail(fmt::format("more than the {} values of FIELD array {}", count, quote_token(name)));
+          const double v = parse_double(token, in.path(), in.line_number(), "a FIELD value");
+          if (got++ == 0) first = v;
+        }
+      }
+    }
+    if (count == 1) info.field_data.emplace_back(name, first);
+  }
+}
+
 VtkInfo parse_header(LineReader& in) {
   VtkInfo info;
   if (!in.next()) in.fail_end("expected '# vtk DataFile Version x.x'");
@@ -69,16 +151,17 @@ VtkInfo parse_header(LineReader& in) {
   if (!in.next()) in.fail_end("expected ASCII or BINARY");
   const auto mode = in.tokens().size() == 1 ? lower(in.tokens()[0]) : std::string();
   if (mode != "ascii" && mode != "binary")
-    in.fail("expected ASCII or BINARY on the third line, got '" + in.line() + "'");
+    in.fail("expected ASCII or BINARY on the third line, got " + quote_token(in.line()));
   info.binary = mode == "binary";
 
   auto t = keyword_line(in, "DATASET STRUCTURED_POINTS");
   if (lower(t[0]) != "dataset" || t.size() != 2)
-    in.fail("expected 'DATASET STRUCTURED_POINTS', got '" + in.line() + "'");
+    in.fail("expected 'DATASET STRUCTURED_POINTS', got " + quote_token(in.line()));
   if (lower(t[1]) != "structured_points")
     in.fail("dataset " + quote_token(t[1]) + " is not supported: expected STRUCTURED_POINTS");
 
   bool have_dims = false, have_origin = false, have_spacing = false;
+  unsigned long long points = 0;
   while (true) {
     t = keyword_line(in, "POINT_DATA");
     const auto key = lower(t[0]);
@@ -93,12 +176,22 @@ VtkInfo parse_header(LineReader& in) {
       for (int i = 0; i < 3; ++i)
         info.dims[i] = static_cast<int>(
             parse_integer(t[i + 1], in.path(), in.line_number(), "a dimension", 1, INT_MAX));
+      // The product in 128 bits: three dimensions below 2^31 can pass 2^64.
+      const auto product = static_cast<unsigned __int128>(info.dims[0]) *
+                           static_cast<unsigned>(info.dims[1]) * static_cast<unsigned>(info.dims[2]);
+      if (product > kMaxPoints)
+        in.fail(fmt::format("DIMENSIONS {} {} {} make more than 2^40 points (the most this "
+                            "reader takes)",
+                            info.dims[0], info.dims[1], info.dims[2]));
+      points = static_cast<unsigned long long>(product);
     } else if (key == "origin") {
       once(have_origin);
       info.origin = three_numbers(in, t, "an origin coordinate", false);
     } else if (key == "spacing" || key == "aspect_ratio") {  // ASPECT_RATIO: VTK 1.0/2.0
       once(have_spacing);
       info.spacing = three_numbers(in, t, "a spacing", true);
+    } else if (key == "field") {
+      read_field(in, t, info);
     } else if (key == "point_data") {
       break;
     } else if (key == "cell_data") {
@@ -110,9 +203,9 @@ VtkInfo parse_header(LineReader& in) {
   if (!have_dims) in.fail("POINT_DATA before DIMENSIONS");
   if (t.size() != 2) in.fail("expected 'POINT_DATA n'");
   const auto n = parse_integer(t[1], in.path(), in.line_number(), "the number of points", 0);
-  if (static_cast<unsigned long long>(n) != info.size())
+  if (static_cast<unsigned long long>(n) != points)
     in.fail(fmt::format("POINT_DATA {} disagrees with DIMENSIONS {} {} {} ({} points)", n,
-                        info.dims[0], info.dims[1], info.dims[2], info.size()));
+                        info.dims[0], info.dims[1], info.dims[2], points));
 
   t = keyword_line(in, "SCALARS name type");
   if (lower(t[0]) != "scalars")
@@ -125,7 +218,7 @@ VtkInfo parse_header(LineReader& in) {
     in.fail("SCALARS with " + quote_token(t[3]) + " components: only 1 is supported");
   t = keyword_line(in, "LOOKUP_TABLE");
   if (lower(t[0]) != "lookup_table" || t.size() != 2)
-    in.fail("expected 'LOOKUP_TABLE default' after SCALARS, got '" + in.line() + "'");
+    in.fail("expected 'LOOKUP_TABLE default' after SCALARS, got " + quote_token(in.line()));
   info.data_line = in.line_number() + 1;
   return info;
 }
@@ -156,26 +249,30 @@ void read_ascii(LineReader& in, const VtkInfo& info, std::vector<T>& data) {
 
 template <class T>
 void read_binary(LineReader& in, const VtkInfo& info, std::vector<T>& data) {
-  const std::size_t n = info.size();
-  const std::size_t bytes = n * sizeof(T);
+  const std::size_t n = info.size();  // below 2^40 (parse_header)
+  const std::uint64_t bytes = static_cast<std::uint64_t>(n) * sizeof(T);
   auto& stream = in.stream();
-  const auto truncated = [&](std::size_t got) {
+  const auto truncated = [&](std::uint64_t got) {
     throw InputError(in.path(), info.data_line,
                      fmt::format("unexpected end of file: expected {} values of {} ({} bytes), "
                                  "got {} bytes",
                                  n, info.type, bytes, got));
   };
-  // For a regular file, say so before allocating for dimensions the file cannot hold.
-  struct stat st {};
-  if (in.path() != "-" && ::stat(in.path().c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
-    const auto pos = static_cast<long long>(stream.tellg());
-    if (pos >= 0 && static_cast<unsigned long long>(st.st_size - pos) < bytes)
-      truncated(static_cast<std::size_t>(st.st_size - pos));
+  // A regular file too short for the dimensions is refused before anything is allocated; from
+  // a pipe or a FIFO the image grows as the bytes arrive.
+  const auto left = in.input().bytes_left();
+  if (left && *left < bytes) truncated(*left);
+  constexpr std::size_t kChunkValues = std::size_t{1} << 20;
+  std::size_t got = 0;
+  if (left) data.resize(n);
+  while (got < n) {
+    const std::size_t m = std::min(kChunkValues, n - got);
+    if (data.size() < got + m) data.resize(got + m);
+    stream.read(reinterpret_cast<char*>(data.data() + got), static_cast<std::streamsize>(m * sizeof(T)));
+    const auto read = static_cast<std::size_t>(stream.gcount());
+    if (read != m * sizeof(T)) truncated(got * sizeof(T) + read);
+    got += m;
   }
-  data.resize(n);
-  stream.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(bytes));
-  if (static_cast<std::size_t>(stream.gcount()) != bytes)
-    truncated(static_cast<std::size_t>(stream.gcount()));
   swap_bytes(data.data(), n);
   // Only whitespace (usually one newline) may follow: a second field would go unread.
   char c;
@@ -202,6 +299,13 @@ void check_image(const VoxelImage<T>& image) {
   if (image.name.empty() || image.name.find_first_of(" \t\r\n\v\f") != std::string::npos)
     throw std::invalid_argument("write_vtk: scalar name '" + image.name +
                                 "' is empty or holds whitespace");
+  for (const auto& [name, value] : image.field_data) {
+    if (name.empty() || name.find_first_of(" \t\r\n\v\f") != std::string::npos)
+      throw std::invalid_argument("write_vtk: field data name '" + name +
+                                  "' is empty or holds whitespace");
+    if (!std::isfinite(value))
+      throw std::invalid_argument("write_vtk: field data '" + name + "' is not finite");
+  }
 }
 
 }  // namespace
@@ -213,7 +317,14 @@ VtkInfo read_vtk_info(const std::string& path) {
 
 template <VtkScalar T>
 VoxelImage<T> read_vtk(const std::string& path) {
-  LineReader in(path);
+  Input input(path);
+  return read_vtk<T>(input);
+}
+
+template <VtkScalar T>
+VoxelImage<T> read_vtk(Input& input) {
+  LineReader in(input);
+  const auto& path = in.path();
   const auto info = parse_header(in);
   if (info.type != vtk_type_name<T>())
     throw InputError(
@@ -224,6 +335,7 @@ VoxelImage<T> read_vtk(const std::string& path) {
   image.origin = info.origin;
   image.spacing = info.spacing;
   image.name = info.name;
+  image.field_data = info.field_data;
   if (info.binary)
     read_binary(in, info, image.data);
   else
@@ -241,10 +353,22 @@ void write_vtk(std::ostream& out, const VoxelImage<T>& image, const std::string&
   const auto& s = image.spacing;
   out << fmt::format(
       "# vtk DataFile Version 3.0\n{}\nBINARY\nDATASET STRUCTURED_POINTS\n"
-      "DIMENSIONS {} {} {}\nORIGIN {} {} {}\nSPACING {} {} {}\nPOINT_DATA {}\n"
-      "SCALARS {} {} 1\nLOOKUP_TABLE default\n",
-      t, image.dims[0], image.dims[1], image.dims[2], o[0], o[1], o[2], s[0], s[1], s[2],
-      image.size(), image.name, vtk_type_name<T>());
+      "DIMENSIONS {} {} {}\nORIGIN {} {} {}\nSPACING {} {} {}\n",
+      t, image.dims[0], image.dims[1], image.dims[2], o[0], o[1], o[2], s[0], s[1], s[2]);
+  if (!image.field_data.empty()) {
+    // Dataset-level field data, as vtkDataWriter writes it: one 1x1 double array per value,
+    // the value in big-endian binary followed by a line break.
+    out << fmt::format("FIELD FieldData {}\n", image.field_data.size());
+    for (const auto& [name, value] : image.field_data) {
+      out << name << " 1 1 double\n";
+      double v = value;
+      swap_bytes(&v, 1);
+      out.write(reinterpret_cast<const char*>(&v), sizeof v);
+      out << '\n';
+    }
+  }
+  out << fmt::format("POINT_DATA {}\nSCALARS {} {} 1\nLOOKUP_TABLE default\n", image.size(),
+                     image.name, vtk_type_name<T>());
   std::vector<T> chunk(std::min(kChunk, image.data.size()));
   for (std::size_t start = 0; start < image.data.size(); start += kChunk) {
     const std::size_t n = std::min(kChunk, image.data.size() - start);
@@ -266,6 +390,7 @@ void write_vtk(const std::string& path, const VoxelImage<T>& image, const std::s
 
 #define CMP_VTK_INSTANTIATE(T)                                                         \
   template VoxelImage<T> read_vtk<T>(const std::string&);                              \
+  template VoxelImage<T> read_vtk<T>(Input&);                                          \
   template void write_vtk<T>(std::ostream&, const VoxelImage<T>&, const std::string&); \
   template void write_vtk<T>(const std::string&, const VoxelImage<T>&, const std::string&);
 CMP_VTK_INSTANTIATE(std::uint8_t)

@@ -7,6 +7,9 @@
 //   DIMENSIONS nx ny nz
 //   ORIGIN ox oy oz
 //   SPACING dx dy dz
+//   FIELD FieldData n          (optional: dataset-level values, e.g. delta and D0;
+//   <name> 1 1 double           one such array per value, written as the data are:
+//   <the value>                  big-endian binary in a BINARY file)
 //   POINT_DATA nx*ny*nz
 //   SCALARS <name> <type> 1
 //   LOOKUP_TABLE default
@@ -19,6 +22,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cmp::io {
@@ -50,6 +54,10 @@ struct VoxelImage {
   Eigen::Vector3d spacing = Eigen::Vector3d::Ones();  // e.g. delta on every axis
   std::string name = "values";                        // SCALARS name (no whitespace)
   std::vector<T> data;                                // x fastest, then y, then z
+  // Dataset-level values (legacy FIELD FieldData, one 1x1 double array each), e.g.
+  // {"delta", 0.04}, {"D0", 1.02}: names without whitespace, finite values. ParaView shows
+  // them as field data; a file without FIELD reads back with none.
+  std::vector<std::pair<std::string, double>> field_data;
 
   VoxelImage() = default;
   // An nx by ny by nz image filled with fill.
@@ -78,6 +86,8 @@ struct VtkInfo {
   std::string type;       // SCALARS type in lower case, e.g. "unsigned_char"
   long scalars_line = 0;  // line of the SCALARS keyword
   long data_line = 0;     // line where the values start
+  // FIELD arrays of one value (other FIELD arrays are read and skipped).
+  std::vector<std::pair<std::string, double>> field_data;
 
   std::size_t size() const { return static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]; }
 };
@@ -86,22 +96,29 @@ struct VtkInfo {
 // single-component SCALARS field on POINT_DATA. Throws cmp::InputError(file, line, ...) for a
 // missing version line, an unknown ASCII/BINARY line, another DATASET, dimensions that are not
 // 3 positive integers, a spacing that is not 3 positive numbers, POINT_DATA disagreeing with
-// the dimensions, CELL_DATA, a missing LOOKUP_TABLE or more than one component.
+// the dimensions, CELL_DATA, a missing LOOKUP_TABLE or more than one component, dimensions
+// whose product (checked in 64 bits) passes 2^40 points, a malformed FIELD block.
 VtkInfo read_vtk_info(const std::string& path);
+
+class Input;
 
 // Reads the image ("-" = stdin), BINARY or ASCII. Throws as read_vtk_info, and
 // cmp::InputError when the SCALARS type is not vtk_type_name<T>() (naming the type found),
-// the data are truncated, an ASCII value does not fit T, or anything but whitespace follows
-// the data.
+// the data are truncated (a regular file too short for the image is refused before anything
+// is allocated; from a pipe memory grows as the bytes arrive), an ASCII value does not fit T,
+// or anything but whitespace follows the data.
 template <VtkScalar T>
 VoxelImage<T> read_vtk(const std::string& path);
+// Same, from an opened input.
+template <VtkScalar T>
+VoxelImage<T> read_vtk(Input& input);
 
 // Writes the image as BINARY atomically (see AtomicOutput; "-" = stdout). title is cut to
 // 255 characters, line breaks become spaces. Converts to big-endian chunk by chunk, so memory
 // stays at the image plus 64k values. Throws std::invalid_argument when data.size() is not
-// nx*ny*nz, a dimension is < 1, spacing is not positive and finite, origin is not finite or
-// name is empty or holds whitespace; cmp::InputError(path, 0, ...) when the file cannot be
-// written.
+// nx*ny*nz, a dimension is < 1, spacing is not positive and finite, origin is not finite,
+// name or a field_data name is empty or holds whitespace, or a field_data value is not
+// finite; cmp::InputError(path, 0, ...) when the file cannot be written.
 template <VtkScalar T>
 void write_vtk(const std::string& path, const VoxelImage<T>& image, const std::string& title);
 

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "io/atomic_output.hpp"
+#include "io/input.hpp"
 #include "io/key_value_line.hpp"
 #include "io/parse_number.hpp"
 
@@ -43,18 +44,19 @@ std::vector<XyzColumn> parse_properties(const std::string& text, LineReader& in)
     start = colon + 1;
   }
   if (parts.size() % 3 != 0)
-    in.fail("Properties must be name:type:width triples, got '" + text + "'");
+    in.fail("Properties must be name:type:width triples, got " + quote_token(text));
   std::vector<XyzColumn> columns;
   std::unordered_set<std::string> names;
   for (std::size_t i = 0; i < parts.size(); i += 3) {
     XyzColumn c;
     c.name = parts[i];
-    if (c.name.empty()) in.fail("Properties: empty column name in '" + text + "'");
-    if (!names.insert(c.name).second) in.fail("Properties: column '" + c.name + "' appears twice");
+    if (c.name.empty()) in.fail("Properties: empty column name in " + quote_token(text));
+    if (!names.insert(c.name).second)
+      in.fail("Properties: column " + quote_token(c.name) + " appears twice");
     if (parts[i + 1].size() != 1 ||
         std::string_view("RISL").find(parts[i + 1][0]) == std::string_view::npos)
-      in.fail("Properties: column '" + c.name + "' has type '" + parts[i + 1] +
-              "', expected R, I, S or L");
+      in.fail("Properties: column " + quote_token(c.name) + " has type " +
+              quote_token(parts[i + 1]) + ", expected R, I, S or L");
     c.type = parts[i + 1][0];
     c.width = static_cast<int>(parse_integer(parts[i + 2], in.path(), in.line_number(),
                                              "a column width in Properties", 1, 1 << 20));
@@ -96,7 +98,7 @@ std::vector<XyzColumn> parse_comment(LineReader& in, XyzFrame& frame) {
       const auto tokens = split_whitespace(value);
       bool ok = tokens.size() == 3;
       for (std::size_t k = 0; ok && k < 3; ++k) ok = parse_flag(tokens[k], frame.pbc[k]);
-      if (!ok) in.fail("pbc must be 3 flags T or F, got '" + value + "'");
+      if (!ok) in.fail("pbc must be 3 flags T or F, got " + quote_token(value));
       has_pbc = true;
     } else if (iequals(key, "Properties")) {
       properties = value;
@@ -194,6 +196,8 @@ void check_frame(const XyzFrame& frame) {
 
 XyzReader::XyzReader(std::string path) : in_(std::move(path)) {}
 
+XyzReader::XyzReader(Input& input) : in_(input) {}
+
 bool XyzReader::next(XyzFrame& frame) {
   frame = XyzFrame{};
   // Blank lines between frames and at the end are tolerated.
@@ -205,8 +209,8 @@ bool XyzReader::next(XyzFrame& frame) {
   } while (in_.blank());
   const auto& tokens = in_.tokens();
   if (tokens.size() != 1)
-    in_.fail("expected the number of atoms (one integer) to start a frame, got '" + in_.line() +
-             "'");
+    in_.fail("expected the number of atoms (one integer) to start a frame, got " +
+             quote_token(in_.line()));
   const int n = static_cast<int>(
       parse_integer(tokens[0], in_.path(), in_.line_number(), "the number of atoms", 0, INT_MAX));
   frame.file = in_.path();
@@ -215,10 +219,28 @@ bool XyzReader::next(XyzFrame& frame) {
     in_.fail_end(fmt::format("expected the comment line of the frame at line {}", frame.line));
   auto columns = parse_comment(in_, frame);
   const auto properties_text = properties_string(columns);
-  int total_width = 0;
+  // Every field of a row takes at least 2 bytes (a character and a separator): the row width
+  // must fit a line, and a regular file must hold the rows the count line claims.
+  long long width = 0;
+  for (const auto& c : columns) width += c.width;  // at most 2^20 columns of 2^20: no overflow
+  if (width > static_cast<long long>(kMaxLineBytes / 2))
+    in_.fail(fmt::format("Properties ask for {} fields per atom, more than a line of at most {} "
+                         "bytes holds",
+                         width, kMaxLineBytes));
+  const int total_width = static_cast<int>(width);
+  const auto least = 2ULL * static_cast<unsigned long long>(width) * static_cast<unsigned>(n);
+  // A claim past the end of a regular file is refused at once when it is large (no reading
+  // megabytes to find out); a small one is read and reported where the file ends.
+  if (const auto left = in_.input().bytes_left(); left && least > *left && least > kMaxLineBytes)
+    throw InputError(in_.path(), frame.line,
+                     fmt::format("the frame claims {} atoms of {} fields, at least {} bytes; the "
+                                 "file has {} bytes left",
+                                 n, width, least, *left));
+  // Grow as rows arrive rather than trusting the count line with a huge allocation.
+  constexpr std::size_t kReserve = 1 << 16;
   for (auto& c : columns) {
-    total_width += c.width;
-    const auto reserve = static_cast<std::size_t>(std::min(n, 1 << 20)) * c.width;
+    const auto reserve =
+        std::min(static_cast<std::size_t>(n) * static_cast<std::size_t>(c.width), kReserve);
     if (c.type == 'S')
       c.strings.reserve(reserve);
     else
@@ -236,7 +258,12 @@ bool XyzReader::next(XyzFrame& frame) {
 }
 
 std::vector<XyzFrame> read_xyz(const std::string& path) {
-  XyzReader reader(path);
+  Input input(path);
+  return read_xyz(input);
+}
+
+std::vector<XyzFrame> read_xyz(Input& input) {
+  XyzReader reader(input);
   std::vector<XyzFrame> frames;
   XyzFrame frame;
   while (reader.next(frame)) frames.push_back(std::move(frame));

@@ -20,11 +20,15 @@ class XyzReader {
  public:
   // Opens path ("-" = stdin); throws cmp::InputError(path, 0, ...) when it cannot be read.
   explicit XyzReader(std::string path);
+  // Reads an opened input (not owned; it must outlive the reader).
+  explicit XyzReader(Input& input);
   // Reads the next frame into frame; false at the end of the file. Throws cmp::InputError with
   // file:line for: an atom count line that is not one integer >= 0, a truncated frame, a row
   // with the wrong number of fields, a non-number in an R or I column, a bad T/F, a Lattice
-  // that is not 9 finite numbers, a pbc that is not 3 T/F flags, a bad Properties string;
-  // "empty file" when the file holds no frame at all.
+  // that is not 9 finite numbers, a pbc that is not 3 T/F flags, a bad Properties string,
+  // Properties wider than a line can hold (kMaxLineBytes / 2 fields), more atoms than a
+  // regular file has bytes for (2 per field); "empty file" when the file holds no frame at all.
+  // Memory grows as rows arrive, whatever the count line claims.
   bool next(XyzFrame& frame);
 
  private:
@@ -34,6 +38,7 @@ class XyzReader {
 
 // Every frame of the file (at least one). Throws as XyzReader::next.
 std::vector<XyzFrame> read_xyz(const std::string& path);
+std::vector<XyzFrame> read_xyz(Input& input);
 
 // Appends frames to a stream (a trajectory). Every number is written in its shortest
 // round-trip form, so a read gives back the same doubles.

@@ -1,5 +1,7 @@
 #pragma once
 // An axis-aligned simulation box, periodic or not along each axis, and the minimum image.
+#include "core/minimum_image.hpp"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -19,7 +21,7 @@ struct Box {
   // (ties at exactly L/2 go either way). Works for any d, not only |d| < L.
   Eigen::Vector3d minimum_image(Eigen::Vector3d d) const {
     for (int a = 0; a < 3; ++a)
-      if (periodic[a]) d[a] -= lengths[a] * std::nearbyint(d[a] / lengths[a]);
+      if (periodic[a]) d[a] = cmp::minimum_image(d[a], lengths[a]);
     return d;
   }
 

@@ -60,7 +60,7 @@ class CellGrid {
   // d reduced to the minimum image (multiplies by precomputed 1/L: no division).
   Eigen::Vector3d minimum_image(const Eigen::Vector3d& d) const {
     Eigen::Vector3d r;
-    for (int a = 0; a < 3; ++a) r[a] = d[a] - periods_[a] * std::nearbyint(d[a] * inverse_periods_[a]);
+    for (int a = 0; a < 3; ++a) r[a] = cmp::minimum_image(d[a], periods_[a], inverse_periods_[a]);
     return r;
   }
 
@@ -87,7 +87,7 @@ class CellGrid {
     double r2 = 0;
     for (int a = 0; a < 3; ++a) {
       d[a] = xi[a] - xj[a];
-      d[a] -= periods_[a] * std::nearbyint(d[a] * inverse_periods_[a]);
+      d[a] = cmp::minimum_image(d[a], periods_[a], inverse_periods_[a]);
       r2 += d[a] * d[a];
     }
     return r2;

@@ -1,6 +1,7 @@
 #include "neighbours/neighbour_list.hpp"
 
 #include "core/errors.hpp"
+#include "core/minimum_image.hpp"
 
 #include <omp.h>
 
@@ -23,9 +24,9 @@ void squared_distances(const double p[3], const double* x, const double* y, cons
                        const double period[3], const double inverse[3], double* r2) {
   for (int m = 0; m < n; ++m) {
     double dx = p[0] - x[m], dy = p[1] - y[m], dz = p[2] - z[m];
-    dx -= period[0] * std::nearbyint(dx * inverse[0]);
-    dy -= period[1] * std::nearbyint(dy * inverse[1]);
-    dz -= period[2] * std::nearbyint(dz * inverse[2]);
+    dx = cmp::minimum_image(dx, period[0], inverse[0]);
+    dy = cmp::minimum_image(dy, period[1], inverse[1]);
+    dz = cmp::minimum_image(dz, period[2], inverse[2]);
     r2[m] = dx * dx + dy * dy + dz * dz;
   }
 }

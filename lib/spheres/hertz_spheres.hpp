@@ -8,6 +8,7 @@
 //
 // Positions are a flat vector (x0, y0, z0, x1, ...): the memory of a row-major #N by 3
 // VertexMatrix. Particles may leave the box; the minimum image takes care of it.
+#include "core/minimum_image.hpp"
 #include "spheres/hertz.hpp"
 
 #include <Eigen/Core>
@@ -69,7 +70,7 @@ class HertzSpheres {
     Eigen::Vector3d d;
     for (int a = 0; a < 3; ++a) {
       d[a] = xi[a] - xj[a];
-      d[a] -= box_[a] * std::nearbyint(d[a] * inverse_box_[a]);
+      d[a] = cmp::minimum_image(d[a], box_[a], inverse_box_[a]);
     }
     return d;
   }

@@ -1,10 +1,9 @@
 #include "spheres/sphere_packing.hpp"
 
 #include "core/errors.hpp"
-#include "io/xyz.hpp"
+#include "io/sphere_packing_xyz.hpp"
 #include "io/xyz_frame.hpp"
 #include "neighbours/box.hpp"
-#include "neighbours/cell_grid.hpp"
 
 #include <fmt/format.h>
 
@@ -34,48 +33,24 @@ io::XyzFrame packing_to_frame(const SpherePacking& p) {
   return frame;
 }
 
-SpherePacking frame_to_packing(const io::XyzFrame& frame) {
-  if (!frame.has_lattice) frame.fail("no Lattice: a sphere packing needs its periodic box");
-  const Eigen::Matrix3d& a = frame.lattice;
-  if (a(0, 1) != 0 || a(0, 2) != 0 || a(1, 0) != 0 || a(1, 2) != 0 || a(2, 0) != 0 || a(2, 1) != 0)
-    frame.fail("the Lattice is not an orthorhombic box (off-diagonal entries are not zero)");
-  if (!(a(0, 0) > 0 && a(1, 1) > 0 && a(2, 2) > 0)) frame.fail("the Lattice has a non-positive side");
-  if (!(frame.pbc[0] && frame.pbc[1] && frame.pbc[2])) frame.fail("pbc is not \"T T T\": a periodic packing is needed");
-  if (!frame.find("radius")) frame.fail("no radius column (Properties=...:radius:R:1)");
+namespace {
+SpherePacking from_io(io::SpherePackingFrame&& f) {
   SpherePacking p;
-  p.box = a.diagonal();
-  p.positions = frame.positions();
-  p.radii = frame.real_column("radius").col(0);
-  const long first_atom_line = frame.line + 2;
-  for (int i = 0; i < p.size(); ++i)
-    if (!(p.radii[i] > 0) || !std::isfinite(p.radii[i]))
-      throw InputError(frame.file, first_atom_line + i, "radius must be a positive number");
-  // Duplicated particles: centres (nearly) on top of each other.
-  if (p.size() > 1) {
-    neighbours::Box box;
-    box.lengths = p.box;
-    box.periodic = {true, true, true};
-    // Cells about a radius wide: few points per cell, and a duplicate is always in reach.
-    const double cutoff = std::min(p.radii.minCoeff(), p.box.minCoeff() / 2);
-    neighbours::CellGrid grid(box, cutoff);
-    grid.build(p.positions);
-    long first = -1;  // the earliest particle in the file that repeats an earlier one
-    grid.for_each_pair(p.positions, [&](int i, int j, const Eigen::Vector3d&, double r2) {
-      if (std::sqrt(r2) < 1e-9 * (p.radii[i] + p.radii[j])) {
-        const long later = std::max(i, j);
-        if (first < 0 || later < first) first = later;
-      }
-    });
-    if (first >= 0)
-      throw InputError(frame.file, first_atom_line + first,
-                       "particle duplicates another one (centres closer than 1e-9 of their radii)");
-  }
+  p.box = f.box;
+  p.positions = std::move(f.centres);
+  p.radii = std::move(f.radii);
   return p;
+}
+}  // namespace
+
+SpherePacking frame_to_packing(const io::XyzFrame& frame) {
+  return from_io(io::sphere_packing_from_frame(frame, io::PbcRule::require_all));
 }
 
 std::vector<SpherePacking> read_sphere_packings(const std::string& path) {
   std::vector<SpherePacking> packings;
-  for (const auto& frame : io::read_xyz(path)) packings.push_back(frame_to_packing(frame));
+  for (auto& f : io::read_sphere_packing_xyz(path, io::PbcRule::require_all))
+    packings.push_back(from_io(std::move(f)));
   return packings;
 }
 

@@ -28,12 +28,14 @@ struct SpherePacking {
 
 // The packing as one extended XYZ frame: Lattice (diagonal), pbc="T T T", species X,
 // pos (wrapped into the box) and radius; callers add info pairs and columns.
-// Reading (frame_to_packing) requires a diagonal Lattice, periodic flags on every axis, a
-// radius:R:1 column with positive radii, and no two centres closer than 1e-9 of their summed
-// radii (a duplicated particle); each problem is a cmp::InputError naming file and line.
+// Reading (frame_to_packing) applies the rules of io/sphere_packing_xyz.hpp with
+// PbcRule::require_all: a diagonal Lattice, periodic flags on every axis, a radius column
+// (radius, OVITO's Radius or ASE's radii) with positive radii, no duplicated particle, at
+// least one sphere; each problem is a cmp::InputError naming file and line.
 io::XyzFrame packing_to_frame(const SpherePacking& packing);
 SpherePacking frame_to_packing(const io::XyzFrame& frame);
-// Every frame of an extended XYZ file as packings (throws as frame_to_packing / read_xyz).
+// Every frame of an extended XYZ file ("-" = stdin) as packings (throws as frame_to_packing /
+// read_xyz).
 std::vector<SpherePacking> read_sphere_packings(const std::string& path);
 
 }  // namespace cmp::spheres

@@ -1,9 +1,11 @@
 #include "voxel/packing.hpp"
 
 #include "core/errors.hpp"
+#include "io/input.hpp"
+#include "io/line_reader.hpp"
 #include "io/off.hpp"
 #include "io/parse_number.hpp"
-#include "io/xyz.hpp"
+#include "io/sphere_packing_xyz.hpp"
 #include "voxel/porosity.hpp"
 
 #include <fmt/format.h>
@@ -15,23 +17,17 @@ namespace cmp::voxel {
 
 namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 double parse_d0(const std::string& text, const std::string& file, long line) {
   double v = 0;
-  try {
-    v = std::stod(text);
-  } catch (...) {
-    throw InputError(file, line, "D0='" + text + "' is not a number");
-  }
-  if (!(v > 0) || !std::isfinite(v)) throw InputError(file, line, "D0=" + text + " is not positive");
+  if (!io::try_parse_double(text, v) || !(v > 0))
+    throw InputError(file, line, "D0=" + io::quote_token(text) +
+                                     " is not a positive number");
   return v;
 }
 
-Packing read_shells(const std::string& path) {
-  auto off = io::read_off(path);
+Packing read_shells(io::Input& input) {
+  const auto& path = input.path();
+  auto off = io::read_off(input);
   Packing p;
   p.kind = Packing::Kind::Shells;
   p.file = path;
@@ -46,11 +42,13 @@ Packing read_shells(const std::string& path) {
   p.F = std::move(off.F);
   if (p.F.rows() == 0) throw InputError(path, 0, "the packing has no triangles");
   unwrap_shells(p.V, p.F, p.shell_offsets, p.box, p.periodic);
-  for (const auto& c : off.comments)
+  for (std::size_t i = 0; i < off.comments.size(); ++i) {
+    const auto& c = off.comments[i];
     if (c.rfind("D0=", 0) == 0 || c.rfind("d0=", 0) == 0) {
-      p.d0 = parse_d0(c.substr(3), path, 0);
+      p.d0 = parse_d0(c.substr(3), path, off.comment_lines[i]);
       p.d0_source = "file";
     }
+  }
   if (p.d0_source.empty()) {
     const auto vols = shell_volumes(p.V, p.F, p.shell_offsets);
     double mean = 0;
@@ -63,29 +61,16 @@ Packing read_shells(const std::string& path) {
   return p;
 }
 
-Packing read_spheres(const std::string& path, double scale) {
-  const auto frames = io::read_xyz(path);
-  const auto& f = frames.back();
+Packing spheres_packing(io::SpherePackingFrame&& f, double scale) {
   Packing p;
   p.kind = Packing::Kind::Spheres;
-  p.file = path;
-  if (!f.has_lattice) f.fail("no Lattice=\"...\": the box of the packing is needed");
-  const Eigen::Matrix3d& L = f.lattice;
-  if (std::abs(L(0, 1)) + std::abs(L(0, 2)) + std::abs(L(1, 0)) + std::abs(L(1, 2)) + std::abs(L(2, 0)) +
-          std::abs(L(2, 1)) != 0)
-    f.fail("the Lattice is not orthorhombic (only axis-aligned boxes are supported)");
-  p.box = L.diagonal();
-  if (!(p.box.minCoeff() > 0)) f.fail("the Lattice has a side that is not positive");
+  p.file = f.file;
+  p.box = f.box;
   p.periodic = f.pbc;
-  p.centres = f.positions();
-  const auto& rcol = f.column("radius", 'R', 1);
-  p.radii = Eigen::Map<const Eigen::VectorXd>(rcol.values.data(), static_cast<long>(rcol.values.size()));
-  for (long i = 0; i < p.radii.size(); ++i)
-    if (!(p.radii[i] > 0) || !std::isfinite(p.radii[i]))
-      throw InputError(path, f.line + 2 + i, fmt::format("radius {} is not positive", p.radii[i]));
-  if (p.radii.size() == 0) f.fail("the frame has no spheres");
-  if (const auto* d0 = f.find_info("D0")) {
-    p.d0 = parse_d0(*d0, path, f.line + 1);
+  p.centres = std::move(f.centres);
+  p.radii = std::move(f.radii);
+  if (const auto d0 = f.positive_info("D0")) {
+    p.d0 = *d0;
     p.d0_source = "file";
   } else {
     p.d0 = 2 * p.radii.mean();
@@ -98,14 +83,35 @@ Packing read_spheres(const std::string& path, double scale) {
 
 }  // namespace
 
-Packing read_packing(const std::string& path, const PackingReadOptions& options) {
-  const bool xyz = ends_with(path, ".xyz") || ends_with(path, ".extxyz");
-  Packing p = xyz ? read_spheres(path, options.scale) : read_shells(path);
-  if (options.d0 > 0) {
-    p.d0 = options.d0;
-    p.d0_source = "option";
+std::vector<Packing> read_packings(io::Input& input, const PackingReadOptions& options) {
+  std::vector<Packing> packings;
+  switch (input.format()) {
+    case io::InputFormat::off:
+      packings.push_back(read_shells(input));
+      break;
+    case io::InputFormat::xyz:
+      for (auto& f : io::read_sphere_packing_xyz(input, io::PbcRule::as_in_file))
+        packings.push_back(spheres_packing(std::move(f), options.scale));
+      break;
+    default:
+      input.fail_format("a packing: an OFF ('OFF' first) or an extended XYZ (an atom count first)");
   }
-  return p;
+  if (options.d0 > 0)
+    for (auto& p : packings) {
+      p.d0 = options.d0;
+      p.d0_source = "option";
+    }
+  return packings;
+}
+
+std::vector<Packing> read_packings(const std::string& path, const PackingReadOptions& options) {
+  io::Input input(path);
+  return read_packings(input, options);
+}
+
+Packing read_packing(const std::string& path, const PackingReadOptions& options) {
+  auto packings = read_packings(path, options);
+  return std::move(packings.back());
 }
 
 void unwrap_shells(mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::vector<int>& offsets,
@@ -133,6 +139,8 @@ void unwrap_shells(mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::
           seen[w] = 1;
           for (int a = 0; a < 3; ++a)
             if (periodic[a]) {
+              // A shift by whole periods, not the minimum image of a separation: kept as
+              // x -= L round(d / L) so the unwrapped coordinates stay bit-identical.
               const double d = V(w, a) - V(v, a);
               V(w, a) -= box[a] * std::nearbyint(d / box[a]);
             }

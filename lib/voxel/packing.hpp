@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+namespace cmp::io {
+class Input;
+}
+
 namespace cmp::voxel {
 
 struct Packing {
@@ -41,11 +45,19 @@ struct PackingReadOptions {
   double d0 = 0;     // > 0: D_0 given by the user, overriding the file
 };
 
-// Reads path: an extended XYZ (name ending in .xyz or .extxyz; the last frame) or else a
-// packing OFF. Throws cmp::InputError(file, line, ...) for: an OFF without '# box' (line 1),
-// shell counts not adding up (from io::read_off), a triangle spanning two shells; an XYZ
-// without Lattice, with a non-orthorhombic lattice, without a radius column (radius:R:1) or
-// with a radius <= 0; and for everything io::read_off / io::XyzReader reject.
+// Reads path ("-" = standard input), telling the format from the content (io::Input::format):
+// a packing OFF gives one Packing (shells), an extended XYZ one Packing per frame (spheres,
+// read by io::read_sphere_packing_xyz with PbcRule::as_in_file: the file's pbc flags are
+// honoured). A D0 from the file ('# D0=' comment of the OFF, D0= of the XYZ comment line) is
+// read strictly ("2.0abc" and "0x2" are errors at their line). Throws cmp::InputError(file,
+// line, ...) for: content that is neither OFF nor extended XYZ, an OFF without '# box' (line
+// 1) or without triangles, everything io::read_off and io::read_sphere_packing_xyz reject
+// (no diagonal Lattice, no radius column, a radius <= 0, a duplicated particle, a frame
+// without spheres, ...).
+std::vector<Packing> read_packings(const std::string& path, const PackingReadOptions& options = {});
+// Same, from an opened input.
+std::vector<Packing> read_packings(io::Input& input, const PackingReadOptions& options = {});
+// The last of read_packings(path, options) (an OFF's only packing, an XYZ's last frame).
 Packing read_packing(const std::string& path, const PackingReadOptions& options = {});
 
 // Moves every vertex of each shell to the periodic image nearest to its neighbours along

@@ -4,6 +4,8 @@
 #include "io/atomic_output.hpp"
 #include "io_test_support.hpp"
 
+#include <climits>
+
 #include <sstream>
 
 using namespace cmp;
@@ -140,6 +142,21 @@ TEST_CASE("CSV column and number errors point at the header and the row", "[csv]
   CHECK(t.number(2, 0) == 0.7);
   CHECK_THROWS_AS(t.number(3, 0), std::out_of_range);
   CHECK_THROWS_AS(t.number(0, 2), std::out_of_range);
+}
+
+TEST_CASE("CSV integer cells are strict and in range and errors name file and line", "[csv]") {
+  TempDir dir;
+  const auto path = dir.file("t.csv");
+  write_text(path, "particles,delta\n 32 ,0.05\n1e300,0.05\n2.5,0.05\n99999999999,0.05\n-1,0.05\n");
+  const auto t = read_csv(path);
+  CHECK(t.integer(0, 0, 1, INT_MAX) == 32);
+  CHECK(input_error([&] { t.integer(1, 0, 1, INT_MAX); }) ==
+        path + ":3: expected an integer in column 'particles', got '1e300'");
+  CHECK_THAT(input_error([&] { t.integer(2, 0, 1, INT_MAX); }), StartsWith(path + ":4: "));
+  CHECK(input_error([&] { t.integer(3, 0, 1, INT_MAX); }) ==
+        path + ":5: expected an integer in column 'particles' in [1, 2147483647], got '99999999999'");
+  CHECK_THAT(input_error([&] { t.integer(4, 0, 1, INT_MAX); }), StartsWith(path + ":6: "));
+  CHECK_THROWS_AS(t.integer(5, 0, 1, 2), std::out_of_range);
 }
 
 TEST_CASE("CSV missing file", "[csv]") {

@@ -126,6 +126,45 @@ TEST_CASE("OFF reader accepts the forms other programs write", "[off]") {
   }
 }
 
+TEST_CASE("OFF dialects of MeshLab and Geomview are read with their extras dropped", "[off]") {
+  TempDir dir;
+  const std::string V = "0 0 0\n1 0 0\n0 1 0\n";
+  const auto read = [&](const std::string& text) {
+    write_text(dir.file("d.off"), text);
+    const auto off = read_off(dir.file("d.off"));
+    REQUIRE(off.V.rows() == 3);
+    REQUIRE(off.F.rows() == 1);
+    CHECK(off.V(1, 0) == 1.0);
+    CHECK(off.F(0, 2) == 2);
+  };
+  SECTION("per-face colours as MeshLab writes them: integers 0-255, with or without alpha") {
+    read("OFF\n3 1 0\n" + V + "3 0 1 2 255 0 0\n");
+    read("OFF\n3 1 0\n" + V + "3 0 1 2 255 128 0 255\n");
+  }
+  SECTION("per-face colours as floats") { read("OFF\n3 1 0\n" + V + "3 0 1 2 0.5 0.25 1 0.75\n"); }
+  SECTION("per-vertex colours: COFF, x y z r g b a (MeshLab) or r g b") {
+    read("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n");
+    read("COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n3 0 1 2\n");
+  }
+  SECTION("normals (NOFF), normals and colours (CNOFF), texture coordinates (STOFF)") {
+    read("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n");
+    read("CNOFF\n3 1 0\n0 0 0 0 0 1 9 9 9 9\n1 0 0 0 0 1 9 9 9 9\n0 1 0 0 0 1 9 9 9\n3 0 1 2 1 2 3\n");
+    read("STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n");
+  }
+  SECTION("a COFF written by MeshLab with per-face colours and a header comment") {
+    read("COFF\n# Created by MeshLab\n3 1 0\n0 0 0 10 20 30 255\n1 0 0 10 20 30 255\n"
+         "0 1 0 10 20 30 255\n3 0 1 2 200 100 50 255\n");
+  }
+}
+
+TEST_CASE("OFF comments keep their line numbers", "[off]") {
+  TempDir dir;
+  write_text(dir.file("c.off"), "OFF\n# first\n\n# D0=2\n3 1 0\n# among the vertices\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const auto off = read_off(dir.file("c.off"));
+  CHECK(off.comments == std::vector<std::string>{"first", "D0=2", "among the vertices"});
+  CHECK(off.comment_lines == std::vector<long>{2, 4, 6});
+}
+
 TEST_CASE("OFF reads standard input and writes standard output for '-'", "[off]") {
   {
     StdinFrom in(kTriangle);
@@ -149,7 +188,23 @@ TEST_CASE("OFF errors name the file and the line", "[off]") {
       {"empty file", "", 0, "empty file"},
       {"only blank lines", "\n  \n\n", 0, "empty file"},
       {"not OFF", "PLY\n", 1, "expected 'OFF' on the first line, got 'PLY'"},
-      {"coloured OFF", "COFF\n3 1 0\n", 1, "unsupported OFF variant 'COFF'"},
+      {"four-dimensional OFF", "4OFF\n3 1 0\n", 1, "unsupported OFF variant '4OFF'"},
+      {"binary OFF", "OFF BINARY\n", 1, "binary OFF ('OFF BINARY') is not supported"},
+      {"COFF vertex without its colour", "COFF\n3 1 0\n0 0 0\n", 3,
+       "expected a vertex 'x y z r g b [a]', got 3 fields"},
+      {"face colour not a number", head + "3 0 1 2 255 0 x\n", 6,
+       "expected a colour component, got 'x'"},
+      {"face with two extra fields", head + "3 0 1 2 1 1\n", 6, "got 6 fields"},
+      {"shell counts summed past 2^31 (issue 15)",
+       "OFF\n# box 2 2 2\n# periodic 1 1 1\n# shells 3 2147483647 2147483647 5\n3 1 0\n0 0 0\n"
+       "1 0 0\n0 1 0\n3 0 1 2\n",
+       4, "'# shells' vertex counts add up to 4294967299, but the file has 3 vertices"},
+      {"shell counts of two billion each", "OFF\n# shells 2 2000000000 2000000000\n3 1 0\n", 2,
+       "add up to 4000000000, but the file has 3 vertices"},
+      {"a shell count past int", "OFF\n# shells 1 2147483648\n", 2,
+       "expected a shell vertex count in [-9223372036854775808, 2147483647]"},
+      {"counts the file cannot hold", "OFF\n2000000000 1 0\n0 0 0\n", 2,
+       "the counts line claims 2000000000 vertices and 1 faces, at least 12000000008 bytes"},
       {"no counts line", "OFF\n# c\n", 2, "unexpected end of file: expected the counts line"},
       {"two counts", "OFF\n3 1\n", 2, "expected the counts 'nV nF nE', got 2 fields"},
       {"negative count", "OFF\n-3 1 0\n", 2,
@@ -171,7 +226,7 @@ TEST_CASE("OFF errors name the file and the line", "[off]") {
       {"index out of range", head + "3 0 1 3\n", 6, "expected a vertex index in [0, 2], got '3'"},
       {"negative index", head + "3 0 -1 2\n", 6, "expected a vertex index in [0, 2], got '-1'"},
       {"extra token on a face", head + "3 0 1 2 255\n", 6,
-       "expected a face '3 i j k', got 5 fields"},
+       "expected a face '3 i j k' or '3 i j k r g b [a]', got 5 fields"},
       {"missing index", head + "3 0 1\n", 6, "got 3 fields"},
       {"more records than announced", head + "3 0 1 2\n3 0 2 1\n", 7,
        "more records than announced"},

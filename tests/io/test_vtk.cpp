@@ -3,7 +3,11 @@
 
 #include "io_test_support.hpp"
 
+#include <bit>
+#include <cmath>
+
 #include <climits>
+#include <cstdlib>
 #include <sstream>
 
 using namespace cmp;
@@ -167,6 +171,23 @@ TEST_CASE("VTK errors name the file, the line and what was found", "[vtk]") {
        "POINT_DATA 4\n" +
            lut + std::string("\x01\x02\x03", 3),
        9, "unexpected end of file: expected 4 values of unsigned_char (4 bytes), got 3 bytes"},
+      {"dimensions whose product wraps 64 bits (issue 15)",
+       "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\n"
+       "DIMENSIONS 2097152 2097152 4194304\nPOINT_DATA 0\n" + lut,
+       5, "DIMENSIONS 2097152 2097152 4194304 make more than 2^40 points"},
+      {"a terabyte claimed by a short file",
+       "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\n"
+       "DIMENSIONS 1024 1024 1048576\nPOINT_DATA 1099511627776\n" + lut + "abcd",
+       9, "unexpected end of file: expected 1099511627776 values of unsigned_char "
+          "(1099511627776 bytes), got 4 bytes"},
+      {"FIELD without its count", kHeader.substr(0, kHeader.find("POINT_DATA")) + "FIELD FieldData\n",
+       8, "expected 'FIELD name n'"},
+      {"FIELD array of an unknown type",
+       kHeader.substr(0, kHeader.find("POINT_DATA")) + "FIELD FieldData 1\ndelta 1 1 quaternion\n",
+       9, "FIELD array type 'quaternion' is not supported"},
+      {"FIELD value not a number",
+       kHeader.substr(0, kHeader.find("POINT_DATA")) + "FIELD FieldData 1\ndelta 1 1 double\nabc\n",
+       10, "expected a FIELD value, got 'abc'"},
       {"binary followed by junk",
        "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\n"
        "DIMENSIONS 2 2 1\nPOINT_DATA 4\n" +
@@ -174,6 +195,73 @@ TEST_CASE("VTK errors name the file, the line and what was found", "[vtk]") {
        0, "unexpected content after the 4 values"},
   };
   check_bad_inputs(cases, "bad.vtk", [](const std::string& path) { read_vtk<std::uint8_t>(path); });
+}
+
+TEST_CASE("VTK from a pipe claiming a terabyte fails on the missing bytes and not on memory", "[vtk]") {
+  // Read from standard input nothing tells the size: the image must grow as bytes arrive.
+  StdinFrom in(
+      "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS 1024 1024 1048576\n"
+      "POINT_DATA 1099511627776\nSCALARS v unsigned_char\nLOOKUP_TABLE default\n" +
+      std::string(200, '\x01'));
+  CHECK_THAT(input_error([] { read_vtk<std::uint8_t>("-"); }),
+             StartsWith("<stdin>:9: unexpected end of file: expected 1099511627776 values") &&
+                 Contains("got 200 bytes"));
+}
+
+TEST_CASE("VTK field data round trip in binary and ASCII and files without it", "[vtk]") {
+  TempDir dir;
+  auto img = pattern_image<float>({3, 2, 2});
+  img.field_data = {{"delta", 0.04}, {"D0", 1.0 / 3.0}, {"count", 10.0}};
+  write_vtk(dir.file("f.vtk"), img, "t");
+  const auto back = read_vtk<float>(dir.file("f.vtk"));
+  require_same(back, img);
+  CHECK(back.field_data == img.field_data);
+  CHECK(read_vtk_info(dir.file("f.vtk")).field_data == img.field_data);
+  // A value whose big-endian bytes hold a line break (0x0a) and '#' must not confuse the reader.
+  img.field_data = {{"tricky", std::bit_cast<double>(0x0A0A230A0A0A0A0AULL)}};
+  write_vtk(dir.file("g.vtk"), img, "t");
+  CHECK(read_vtk<float>(dir.file("g.vtk")).field_data == img.field_data);
+  // ASCII field data as other writers make it, arrays of several values skipped
+  write_text(dir.file("a.vtk"), kHeader.substr(0, kHeader.find("POINT_DATA")) +
+                                    "FIELD FieldData 2\nTIME 1 1 double\n2.5\nlist 2 2 int\n1 2\n3 4\n" +
+                                    "POINT_DATA 4\nSCALARS v unsigned_char 1\nLOOKUP_TABLE default\n0 1 2 3\n");
+  const auto a = read_vtk<std::uint8_t>(dir.file("a.vtk"));
+  CHECK(a.field_data == std::vector<std::pair<std::string, double>>{{"TIME", 2.5}});
+  CHECK(a.data[3] == 3);
+  // no field data: none read back
+  write_vtk(dir.file("n.vtk"), pattern_image<float>({2, 2, 2}), "t");
+  CHECK(read_vtk<float>(dir.file("n.vtk")).field_data.empty());
+  // bad field data refused by the writer
+  img.field_data = {{"two words", 1.0}};
+  CHECK_THROWS_AS(write_vtk(dir.file("b.vtk"), img, "t"), std::invalid_argument);
+  img.field_data = {{"x", NAN}};
+  CHECK_THROWS_AS(write_vtk(dir.file("b.vtk"), img, "t"), std::invalid_argument);
+}
+
+TEST_CASE("VTK field data and origin and spacing as VTK's own reader sees them", "[vtk]") {
+  TempDir dir;
+  auto img = pattern_image<std::uint8_t>({4, 3, 2});
+  img.origin = Eigen::Vector3d(0.125, 0.25, 1.0 / 3.0);
+  img.spacing = Eigen::Vector3d(0.25, 0.5, 0.75);
+  img.field_data = {{"delta", 0.04}, {"D0", 1.0 / 3.0}};
+  write_vtk(dir.file("f.vtk"), img, "percolate test");
+  const std::string script =
+      "import sys, vtk\n"
+      "r = vtk.vtkStructuredPointsReader(); r.SetFileName(sys.argv[1]); r.ReadAllFieldsOn(); r.Update()\n"
+      "o = r.GetOutput(); fd = o.GetFieldData()\n"
+      "assert o.GetDimensions() == (4, 3, 2), o.GetDimensions()\n"
+      "assert o.GetOrigin() == (0.125, 0.25, 1.0 / 3.0), o.GetOrigin()\n"
+      "assert o.GetSpacing() == (0.25, 0.5, 0.75), o.GetSpacing()\n"
+      "assert fd.GetNumberOfArrays() == 2, fd.GetNumberOfArrays()\n"
+      "assert fd.GetArray('delta').GetValue(0) == 0.04\n"
+      "assert fd.GetArray('D0').GetValue(0) == 1.0 / 3.0\n"
+      "s = o.GetPointData().GetScalars()\n"
+      "assert s.GetNumberOfTuples() == 24 and s.GetValue(23) == 23 * 37 % 256, s.GetValue(23)\n"
+      "import meshio\n"  // meshio reads the image too (it drops dataset-level field data)
+      "m = meshio.read(sys.argv[1])\n"
+      "assert m.points.shape == (24, 3) and m.point_data['solid'][23] == 23 * 37 % 256\n";
+  write_text(dir.file("check.py"), script);
+  CHECK(std::system(("/usr/bin/python3 " + dir.file("check.py") + " " + dir.file("f.vtk")).c_str()) == 0);
 }
 
 TEST_CASE("VTK reader with the wrong type names the type found", "[vtk]") {

@@ -236,6 +236,13 @@ TEST_CASE("extended XYZ errors name the file and the line", "[xyz]") {
        "expected a column width in Properties"},
       {"Properties twice the same column", "1\nProperties=a:R:1:a:R:1\n0 0\n", 2,
        "column 'a' appears twice"},
+      {"30 bytes asking for terabytes (issue 15)", "1048576\nProperties=a:R:1048576\n", 2,
+       "Properties ask for 1048576 fields per atom, more than a line of at most 1048576 bytes"},
+      {"wide columns adding up past int", "1\nProperties=a:R:1048576:b:R:1048576:c:R:1048576\n", 2,
+       "Properties ask for 3145728 fields per atom"},
+      {"more atoms than the file holds", "2000000000\nProperties=pos:R:3\n0 0 0\n", 1,
+       "the frame claims 2000000000 atoms of 3 fields, at least 12000000000 bytes"},
+      {"a key without a name", "1\nProperties=pos:R:3 =\x1b" "esc\n0 0 0\n", 2, "'=\\x1Besc' without a key"},
       {"unterminated quote in an extended line", "1\nLattice=\"1 0 0 Properties=pos:R:3\n0 0 0\n",
        2, "unterminated quote"},
   };
