@@ -314,6 +314,21 @@ void Tool::collect(const std::function<void()>& f) {
   }
 }
 
+void Tool::collect(const std::string& flag, const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    std::string message = e.what();
+    message = message.substr(0, message.find('\n'));
+    for (const auto& prefix : {flag + ": ", flag + " "})
+      if (message.rfind(prefix, 0) == 0) {
+        message = message.substr(prefix.size());
+        break;
+      }
+    check(false, flag, message);
+  }
+}
+
 void Tool::finish_checks() const {
   if (problems_.empty()) return;
   std::string all;

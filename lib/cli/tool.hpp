@@ -149,6 +149,9 @@ class Tool {
   void check(bool ok, const std::string& flag, const std::string& message);
   // Runs f and records the cmp::UsageError it throws (a library's validate()).
   void collect(const std::function<void()>& f);
+  // Runs f (a parser of the option's text) and records the cmp::UsageError it throws under
+  // flag: "--axis must be x, y or z, got 'w'" becomes "--axis: must be x, y or z, got 'w'".
+  void collect(const std::string& flag, const std::function<void()>& f);
   // Throws cmp::UsageError holding every recorded problem, one per line, then the hint
   // "run 'tool [sub] --help' for the options", if there are any.
   void finish_checks() const;
