@@ -54,58 +54,8 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
   }
 }
 
-std::unique_ptr<CLI::App> make_app(const std::string& tool, const std::string& purpose) {
-  auto app = std::make_unique<CLI::App>(purpose, tool);
-  app->set_version_flag("--version", tool + " " + version());
-  app->set_help_all_flag("--help-all", "Print this help and that of every subcommand, then exit");
-  app->get_formatter()->column_width(34);
-  app->option_defaults()->always_capture_default();
-  return app;
-}
-
-void parse(CLI::App& app, int argc, char** argv) {
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    app.exit(e);  // prints the help of the (sub)command that was asked
-    throw CLI::Success();
-  } catch (const CLI::CallForAllHelp& e) {
-    app.exit(e);
-    throw CLI::Success();
-  } catch (const CLI::CallForVersion& e) {
-    app.exit(e);
-    throw CLI::Success();
-  } catch (const CLI::ParseError& e) {
-    throw UsageError(std::string(e.what()) + "\nrun '" + app.get_name() + " --help' for the options");
-  }
-}
-
-void add_seed_option(CLI::App& app, CommonOptions& common) {
-  app.add_option("--seed", common.seed, "seed of the random number generator; same seed, same output");
-}
-
-void add_threads_option(CLI::App& app, CommonOptions& common) {
-  app.add_option("--threads", common.threads, "OpenMP threads (0: all cores); results do not depend on it")
-      ->check(CLI::NonNegativeNumber);
-}
-
-void add_quiet_option(CLI::App& app, CommonOptions& common) {
-  app.add_flag("-q,--quiet", common.quiet, "no progress bar or summary on stderr");
-}
-
 void apply_threads(const CommonOptions& common) {
   if (common.threads > 0) omp_set_num_threads(common.threads);
-}
-
-void OptionChecks::require(bool ok, const std::string& message) {
-  if (!ok) problems_.push_back(message);
-}
-
-void OptionChecks::throw_if_any() const {
-  if (problems_.empty()) return;
-  std::string all;
-  for (const auto& p : problems_) all += (all.empty() ? "" : "\n") + p;
-  throw UsageError(all);
 }
 
 bool Bounds::contains(double x) const {
@@ -142,6 +92,16 @@ void record_range(Tool& tool, const std::string& flag, const std::string& text, 
 bool parse_u64(const std::string& s, std::uint64_t& out) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && end == s.data() + s.size() && !s.empty();
+}
+
+// An App with the toolkit's formatting and a --version flag ("tool <version>").
+std::unique_ptr<CLI::App> make_app(const std::string& tool, const std::string& purpose) {
+  auto app = std::make_unique<CLI::App>(purpose, tool);
+  app->set_version_flag("--version", tool + " " + version());
+  app->set_help_all_flag("--help-all", "Print this help and that of every subcommand, then exit");
+  app->get_formatter()->column_width(34);
+  app->option_defaults()->always_capture_default();
+  return app;
 }
 }  // namespace
 
@@ -311,6 +271,21 @@ void Tool::collect(const std::function<void()>& f) {
     std::istringstream lines(e.what());
     std::string line;
     while (std::getline(lines, line)) problems_.push_back(line);
+  }
+}
+
+void Tool::collect(const std::string& flag, const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    std::string message = e.what();
+    message = message.substr(0, message.find('\n'));
+    for (const auto& prefix : {flag + ": ", flag + " "})
+      if (message.rfind(prefix, 0) == 0) {
+        message = message.substr(prefix.size());
+        break;
+      }
+    check(false, flag, message);
   }
 }
 

@@ -1,22 +1,25 @@
 #pragma once
-// The command-line conventions of DESIGN.md in one place, so every program gets them alike:
-// CLI11 options, --version, --seed/--seeds/--resume, --threads, --quiet, exit statuses 0/1/2,
-// every message prefixed with the tool's name, every bad option reported at once under its
-// flag, and SIGINT/SIGTERM handled (cli/interrupt.hpp).
+// What every program of the toolkit does alike on its command line (the README's
+// "Conventions of every program"), in one place: CLI11 options, --version,
+// --seed/--seeds/--resume, --threads, --quiet, exit statuses 0/1/2, every message prefixed
+// with the tool's name, every bad option reported at once under its flag, and SIGINT/SIGTERM
+// handled (cli/interrupt.hpp).
 //
-// A tool's main, with cli::Tool (rndmesh and shellpack are the worked examples):
+// A tool's main, with cli::Tool (rndmesh, shellpack, percolate and kcfit are worked examples):
 //
 //   int main(int argc, char** argv) {
-//     return cli::run_tool("percolate", [&] {
+//     return cli::run_tool("poresize", [&] {
 //       Options o;
-//       cli::Tool tool("percolate", "Voxel percolation analysis of packings.");
+//       cli::Tool tool("poresize", "Pore sizes of packings.");
 //       auto& app = tool.app();                      // plain CLI11 for strings, flags, subcommands
 //       app.add_option("packings", o.inputs, "OFF or XYZ files ('-': stdin)")->required();
-//       tool.add_double(app, "--scale", o.scale, "radius scale factor", cli::positive());
+//       tool.add_double(app, "--delta", o.delta, "voxel side [D0]", cli::positive());
 //       tool.add_int(app, "--bins", o.bins, "histogram bins", cli::at_least(1));
+//       app.add_option("--axis", o.axis, "x, y or z");
 //       tool.add_common(app, o.common);              // --seed --threads --quiet (kSeed|kThreads|kQuiet)
 //       tool.parse(argc, argv);                      // CLI11 errors: "tool: msg" + the --help hint, exit 2
-//       tool.check(o.thickness < o.scale, "--thickness", "must be below --scale");  // cross-option rules
+//       tool.collect("--axis", [&] { o.flow_axis = voxel::axis_from_name("--axis", o.axis); });  // a parser's error
+//       tool.check(o.bins * o.delta <= 10, "--bins", "times --delta must not exceed 10 D0");  // across options
 //       tool.finish_checks();                        // every problem at once, exit 2
 //       cli::apply_threads(o.common);
 //       ...
@@ -26,9 +29,9 @@
 // Numbers are bound to a string and converted strictly after parsing (io/parse_number.hpp:
 // "2abc", "0x2", "nan" are refused), then range-checked, each problem recorded as
 // "--flag: 'abc' is not an integer" or "--flag: must be positive, got '-1'". Help shows
-// `--flag INT` or `--flag FLOAT` with the default (none for a required option).
-// The older helpers below (make_app, parse, add_*_option, OptionChecks) remain for the
-// programs not yet moved to Tool.
+// `--flag INT` or `--flag FLOAT` with the default (none for a required option). Options a
+// tool parses itself (lists, names) report under their flag too, with check() or
+// collect(flag, f). Every program (rndmesh, shellpack, percolate, kcfit) is built on Tool.
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <deque>
@@ -39,7 +42,7 @@
 
 namespace cmp::cli {
 
-// Exit statuses (DESIGN.md).
+// Exit statuses: 0 success, 1 the computation failed, 2 bad usage or bad input.
 enum ExitStatus : int { kSuccess = 0, kComputationFailed = 1, kBadInput = 2 };
 
 // Installs the SIGINT/SIGTERM handlers (cli/interrupt.hpp), runs body() and maps what escapes
@@ -48,36 +51,14 @@ enum ExitStatus : int { kSuccess = 0, kComputationFailed = 1, kBadInput = 2 };
 // -> 1. Each line of a message is prefixed with "tool: ".
 int run_tool(const std::string& tool, const std::function<int()>& body);
 
-// An App with the toolkit's formatting and a --version flag ("tool <version>").
-// Options and subcommands are added by the tool; parse with parse().
-std::unique_ptr<CLI::App> make_app(const std::string& tool, const std::string& purpose);
-
-// Parses argv; --help and --version print and end the program with status 0 (by throwing
-// CLI::Success through run_tool); parse errors become cmp::UsageError (status 2).
-void parse(CLI::App& app, int argc, char** argv);
-
 // The options most programs share.
 struct CommonOptions {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: all cores
   bool quiet = false;
 };
-void add_seed_option(CLI::App& app, CommonOptions& common);
-void add_threads_option(CLI::App& app, CommonOptions& common);
-void add_quiet_option(CLI::App& app, CommonOptions& common);
 // Sets the OpenMP thread count from common.threads (0 leaves the default: all cores).
 void apply_threads(const CommonOptions& common);
-
-// Collects every problem with the options before reporting them all at once (exit 2).
-class OptionChecks {
- public:
-  // Records message when ok is false.
-  void require(bool ok, const std::string& message);
-  // Throws cmp::UsageError holding every recorded message, one per line, if there are any.
-  void throw_if_any() const;
- private:
-  std::vector<std::string> problems_;
-};
 
 // The range a number option must lie in; lo/hi_open exclude the bound. Said in messages as
 // "must be positive", "must be at least 4", "must lie in [1, 14]", "must lie in (0, 1)".
@@ -149,6 +130,9 @@ class Tool {
   void check(bool ok, const std::string& flag, const std::string& message);
   // Runs f and records the cmp::UsageError it throws (a library's validate()).
   void collect(const std::function<void()>& f);
+  // Runs f (a parser of the option's text) and records the cmp::UsageError it throws under
+  // flag: "--axis must be x, y or z, got 'w'" becomes "--axis: must be x, y or z, got 'w'".
+  void collect(const std::string& flag, const std::function<void()>& f);
   // Throws cmp::UsageError holding every recorded problem, one per line, then the hint
   // "run 'tool [sub] --help' for the options", if there are any.
   void finish_checks() const;

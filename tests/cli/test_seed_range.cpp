@@ -19,19 +19,6 @@ TEST_CASE("Output patterns", "[cli]") {
   CHECK(cli::expand_pattern("plain.off", "seed", "7") == "plain.off");
 }
 
-TEST_CASE("Option checks report every problem at once", "[cli]") {
-  cli::OptionChecks checks;
-  checks.require(true, "never");
-  checks.require(false, "first");
-  checks.require(false, "second");
-  try {
-    checks.throw_if_any();
-    FAIL("no error");
-  } catch (const UsageError& e) {
-    CHECK(std::string(e.what()) == "first\nsecond");
-  }
-}
-
 TEST_CASE("Command lines are quoted for provenance", "[cli]") {
   const char* args[] = {"/usr/bin/rndmesh", "random", "-o", "my mesh.off"};
   CHECK(cli::command_line(4, const_cast<char**>(args)) == "rndmesh random -o 'my mesh.off'");

@@ -138,6 +138,34 @@ TEST_CASE("Tool seed options check patterns and ranges with the other options", 
   }
 }
 
+TEST_CASE("Tool records a parser's error under the flag it parses", "[cli]") {
+  cli::Tool tool("perc", "test");
+  std::string axis = "x", marking = "faces";
+  int bins = 10;
+  tool.app().add_option("--axis", axis, "axis");
+  tool.add_int(tool.app(), "--bins", bins, "bins", cli::at_least(1));
+  std::vector<std::string> args{"perc", "--axis", "w", "--bins", "abc"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  tool.parse(static_cast<int>(argv.size()), argv.data());
+  tool.collect("--axis", [&] { throw UsageError("--axis must be x, y or z, got '" + axis + "'"); });
+  tool.collect("--model", [&] { throw UsageError("--model: unknown model 'kozeny'"); });
+  tool.collect("--marking", [&] { throw UsageError("must be 'vertices' or 'triangles', got '" + marking + "'"); });
+  tool.collect("--bins", [&] { throw UsageError("--bins: reported twice"); });
+  tool.collect("--scale", [] {});
+  try {
+    tool.finish_checks();
+    FAIL("no error");
+  } catch (const UsageError& e) {
+    CHECK(std::string(e.what()) ==
+          "--bins: 'abc' is not an integer\n"
+          "--axis: must be x, y or z, got 'w'\n"
+          "--model: unknown model 'kozeny'\n"
+          "--marking: must be 'vertices' or 'triangles', got 'faces'\n"
+          "run 'perc --help' for the options");
+  }
+}
+
 TEST_CASE("Resume counts a seed done when every output exists", "[cli]") {
   const auto dir = std::filesystem::temp_directory_path() / "cmp_test_resume";
   std::filesystem::create_directories(dir);

@@ -119,16 +119,16 @@ case_bad_input() {
   expect_error 2 "nan.csv:4: .*abc" "$kcfit" nan.csv --model power -o out.csv
   expect_error 2 "unknown model 'kozeny'" "$kcfit" in.csv --model kozeny -o out.csv
   expect_error 2 "--fix: expected name=value" "$kcfit" in.csv --model power --fix phi_c -o out.csv
-  expect_error 2 "--fix phi_c=abc: the value 'abc' is not a number" "$kcfit" in.csv --model power --fix phi_c=abc -o out.csv
+  expect_error 2 "--fix: 'abc' is not a finite number (in phi_c=abc)$" "$kcfit" in.csv --model power --fix phi_c=abc -o out.csv
   expect_error 2 "--fix: expected name=value" "$kcfit" in.csv --model power --fix =0.1 -o out.csv
   expect_error 2 "--fix: model power has no parameter 'gamma'" "$kcfit" in.csv --model power --fix gamma=1 -o out.csv
   expect_error 2 "--loss: unknown loss" "$kcfit" in.csv --model power --loss cubic -o out.csv
-  expect_error 2 "--loss ml is for 0/1 outcomes" "$kcfit" in.csv --model power --loss ml -o out.csv
+  expect_error 2 "--loss: ml is for 0/1 outcomes" "$kcfit" in.csv --model power --loss ml -o out.csv
   printf 'porosity,percolates\n0.1,0\n0.2,0.5\n0.3,1\n' >half.csv
   expect_error 2 "half.csv:3: --loss ml needs percolates to be 0 or 1" "$kcfit" half.csv --model sigmoid --loss ml -o out.csv
   expect_error 2 "no-such.csv" "$kcfit" no-such.csv --model power -o out.csv
   expect_error 2 "input CSV file is required" "$kcfit" --model power
-  expect_error 2 "--plot-kc needs --plot" "$kcfit" in.csv --model power --plot-kc -o out.csv
+  expect_error 2 "--plot-kc: needs --plot$" "$kcfit" in.csv --model power --plot-kc -o out.csv
 }
 case_fit_failures() {
   printf 'porosity,permeability\n0.2,1\n0.3,2\n' >two.csv
@@ -243,7 +243,7 @@ case_several_files() {
   expect_error 2 "all.csv:2: no row satisfies --where delta=0.5" "$kcfit" all.csv --model sigmoid --where delta=0.5 -o out.csv
   expect_error 2 "no column 'dleta' (--group-by)" "$kcfit" all.csv --model sigmoid --group-by dleta -o out.csv
   expect_error 2 "--where: expected column=value" "$kcfit" all.csv --model sigmoid --where delta -o out.csv
-  expect_error 2 "--where delta=x: the value 'x' is not a number" "$kcfit" all.csv --model sigmoid --where delta=x -o out.csv
+  expect_error 2 "--where: delta=x: the value 'x' is not a number" "$kcfit" all.csv --model sigmoid --where delta=x -o out.csv
   # A group whose fit fails is named.
   printf 'delta,porosity,percolates\n0.04,0.1,0\n0.04,0.2,1\n0.04,0.15,1\n0.04,0.16,0\n0.04,0.12,0\n0.05,0.1,0\n0.05,0.11,0\n0.05,0.2,1\n0.05,0.21,1\n' >sep.csv
   expect_error 1 "delta=0.05: .*perfectly separated" "$kcfit" sep.csv --model sigmoid --group-by delta -o out.csv
@@ -261,13 +261,32 @@ case_bad_options_at_once() {
   printf 'porosity,permeability\n0.2,1\n0.3,2\n' >in.csv
   "$kcfit" in.csv --model kozeny --fix phi_c=abc --where delta --plot x.txt --loss cubic -o out.csv 2>err.txt
   [ $? -eq 2 ] || fail "exit status"
-  for p in "--model: unknown model 'kozeny'" "--fix phi_c=abc: the value 'abc' is not a number" "--where: expected column=value" \
-    "--plot x.txt: the figure's format comes from its extension: .png, .svg or .pdf" "--loss: unknown loss 'cubic'"; do
+  for p in "--model: unknown model 'kozeny'" "--fix: 'abc' is not a finite number (in phi_c=abc)" "--where: expected column=value" \
+    "--plot: the figure's format comes from its extension (.png, .svg or .pdf), got 'x.txt'" "--loss: unknown loss 'cubic'"; do
     grep -q -- "^kcfit: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
   done
-  [ "$(wc -l <err.txt)" -eq 5 ] || fail "not one line per problem: $(cat err.txt)"
+  grep -qx "kcfit: run 'kcfit --help' for the options" err.txt || fail "no --help hint: $(cat err.txt)"
+  [ "$(wc -l <err.txt)" -eq 6 ] || fail "not one line per problem: $(cat err.txt)"
   ! ls out.* x.txt .x.txt* 2>/dev/null | grep -q . || fail "left a file"
-  expect_error 2 "--plot fit.txt: the figure's format" "$kcfit" in.csv --model power --plot fit.txt -o out.csv
+  expect_error 2 "--plot: the figure's format" "$kcfit" in.csv --model power --plot fit.txt -o out.csv
+}
+case_bad_numbers_at_once() {
+  # Number options are converted after parsing: every bad one is reported with the others,
+  # under its flag, then the --help hint; nothing written.
+  printf 'porosity,permeability\n0.2,1\n0.3,2\n' >in.csv
+  "$kcfit" in.csv --model kozeny --bootstrap -3 --max-iter abc --seed x --threads -1 --sigma e --loss log \
+    -o out.csv 2>err.txt
+  [ $? -eq 2 ] || fail "exit status"
+  for p in "--bootstrap: must lie in \[0, 10000000\], got '-3'" "--max-iter: 'abc' is not an integer" \
+    "--seed: 'x' is not a non-negative integer" "--threads: must not be negative, got '-1'" \
+    "--model: unknown model 'kozeny'; .*" "--sigma: weights the linear loss only, not --loss log" \
+    "run 'kcfit --help' for the options"; do
+    grep -qx -- "kcfit: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
+  done
+  [ "$(wc -l <err.txt)" -eq 7 ] || fail "not one line per problem: $(cat err.txt)"
+  expect_error 2 "--max-iter: must lie in \[1, 1000000\], got '0'$" "$kcfit" in.csv --model power --max-iter 0 -o out.csv
+  expect_error 2 "--model: required" "$kcfit" in.csv -o out.csv
+  ! ls -a | grep -q '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
 }
 case_plot_formats() {
   "$kcfit" "$perc" --model sigmoid --plot p.svg -q >/dev/null || fail "svg"

@@ -126,7 +126,7 @@ case_scale_list() {
   /usr/bin/python3 -c "import sys; assert float(sys.argv[1]) > float(sys.argv[2])" "$(field p.csv porosity 1)" \
     "$(field p.csv porosity 3)" || fail "porosity does not fall with the scale"
   expect_error 2 "{scale}" "$percolate" "$sc" --delta 0.1 --scale 1,1.1 -o out.vtk
-  expect_error 2 "scale must be positive" "$percolate" "$sc" --delta 0.1 --scale 1,-1 -o out.vtk
+  expect_error 2 "--scale: must be positive, got '-1'$" "$percolate" "$sc" --delta 0.1 --scale 1,-1 -o out.vtk
   make_shell_packing
   expect_error 2 "packing.off: --scale 1.1 applies to sphere packings" "$percolate" packing.off --delta 0.1 --scale 1.1 -o out.vtk
 }
@@ -254,13 +254,13 @@ case_bad_shell_counts() {
   expect_error 2 "bad.off:3: .*add up" "$percolate" bad.off --delta 0.1 -o out.vtk
 }
 case_bad_delta() {
-  expect_error 2 "delta must be positive" "$percolate" "$sc" --delta 0 -o out.vtk
-  expect_error 2 "delta must be positive" "$percolate" "$sc" --delta 0.1,-1 -o out.vtk
-  expect_error 2 "delta.*not a number" "$percolate" "$sc" --delta 0.1,x -o out.vtk
+  expect_error 2 "--delta: must be positive, got '0'$" "$percolate" "$sc" --delta 0 -o out.vtk
+  expect_error 2 "--delta: must be positive, got '-1'$" "$percolate" "$sc" --delta 0.1,-1 -o out.vtk
+  expect_error 2 "--delta: 'x' is not a finite number$" "$percolate" "$sc" --delta 0.1,x -o out.vtk
   expect_error 2 "simple_cubic_4x4x4.xyz: .*larger than the box" "$percolate" "$sc" --delta 5 -o out.vtk
-  expect_error 2 "delta is required" "$percolate" "$sc" -o out.vtk
+  expect_error 2 "--delta: required" "$percolate" "$sc" -o out.vtk
   "$percolate" "$sc" --delta 0 --scale 0 --axis w -o out.vtk 2> all.txt && fail "bad options accepted"
-  [ "$(grep -c . all.txt)" = 3 ] || fail "every bad option at once: $(cat all.txt)"
+  [ "$(grep -c . all.txt)" = 4 ] || fail "every bad option at once, then the --help hint: $(cat all.txt)"
 }
 case_bad_sphere_file_without_radii() {
   printf '1\nLattice="2 0 0 0 2 0 0 0 2" Properties=species:S:1:pos:R:3 pbc="T T T"\nX 1 1 1\n' > norad.xyz
@@ -273,11 +273,51 @@ case_bad_later_file_writes_nothing() {
   expect_error 2 "nolattice.xyz:.*Lattice" "$percolate" good.xyz nolattice.xyz --delta 0.1 -o 'out.{name}.vtk' --csv out.csv
 }
 case_bad_options() {
-  expect_error 2 "marking" "$percolate" "$sc" --delta 0.1 --marking faces -o out.vtk
-  expect_error 2 "connectivity" "$percolate" "$sc" --delta 0.1 --connectivity 8 -o out.vtk
-  expect_error 2 "axis" "$percolate" "$sc" --delta 0.1 --axis w -o out.vtk
-  expect_error 2 "scale" "$percolate" "$sc" --delta 0.1 --scale -1 -o out.vtk
+  expect_error 2 "--marking: must be 'vertices' or 'triangles', got 'faces'$" "$percolate" "$sc" --delta 0.1 --marking faces -o out.vtk
+  expect_error 2 "--connectivity: must be 6, 18 or 26, got '8'$" "$percolate" "$sc" --delta 0.1 --connectivity 8 -o out.vtk
+  expect_error 2 "--axis: must be x, y or z, got 'w'$" "$percolate" "$sc" --delta 0.1 --axis w -o out.vtk
+  expect_error 2 "--scale: must be positive, got '-1'$" "$percolate" "$sc" --delta 0.1 --scale -1 -o out.vtk
   expect_error 2 "missing.xyz" "$percolate" missing.xyz --delta 0.1 -o out.vtk
+}
+case_bad_options_all_at_once() {
+  # Every bad option in one run, each under its flag, numbers included (no CLI11 message
+  # about the first one alone), then the --help hint; nothing written.
+  "$percolate" "$sc" --delta -1 --scale abc --connectivity 7 --threads -2 --d0 x --thickness -0.5 \
+    --sphere-marking middle -o out.vtk --csv out.csv 2>err.txt
+  [ $? -eq 2 ] || fail "exit status"
+  for p in "--delta: must be positive, got '-1'" "--scale: 'abc' is not a finite number" \
+    "--connectivity: must be 6, 18 or 26, got '7'" "--threads: must not be negative, got '-2'" \
+    "--d0: 'x' is not a finite number" "--thickness: must not be negative, got '-0.5'" \
+    "--sphere-marking: must be 'overlap' or 'centre', got 'middle'" "run 'percolate --help' for the options"; do
+    grep -qxF -- "percolate: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
+  done
+  [ "$(wc -l <err.txt)" -eq 8 ] || fail "not one line per problem: $(cat err.txt)"
+  printf 'file,particles,delta,porosity,percolates\na,4,0.1,0.5,1\n' >runs.csv
+  "$percolate" sweep runs.csv --bins abc 2>err.txt
+  [ $? -eq 2 ] || fail "sweep exit status"
+  [ "$(cat err.txt)" = "percolate: --bins: 'abc' is not an integer
+percolate: run 'percolate sweep --help' for the options" ] || fail "sweep --bins abc: $(cat err.txt)"
+  expect_error 2 "--bins: must be at least 1, got '0'$" "$percolate" sweep runs.csv --bins 0
+  ! ls -a | grep -q '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
+}
+case_interrupt_sigint() {
+  # Ctrl-C during one long run: no CSV temporary exists while the analysis runs (it appears
+  # with the first row, so even a SIGKILL there leaves nothing), and after the signal nothing
+  # is left; exit 130, "interrupted".
+  set -m
+  "$percolate" "$sc" --delta 0.01 --connectivity 26 --periodic --threads 1 --csv perc.csv -q >/dev/null 2>interrupt.err &
+  local pid=$!
+  sleep 0.7  # the run takes about 2 s (400^3 voxels, 26 neighbours)
+  local during
+  during=$(ls -A | grep -v '^interrupt.err$')
+  kill -0 "$pid" 2>/dev/null || fail "the run ended before the signal: make it longer"
+  kill -s INT "$pid"
+  wait "$pid"; local got=$?
+  set +m
+  [ -z "$during" ] || fail "files while the first run computes: $during"
+  [ "$got" = 130 ] || fail "exit $got after SIGINT, expected 130: $(cat interrupt.err)"
+  [ "$(cat interrupt.err)" = "percolate: interrupted" ] || fail "stderr: $(cat interrupt.err)"
+  [ -z "$(ls -A | grep -v '^interrupt.err$')" ] || fail "left files: $(ls -A)"
 }
 
 run_cases "$@"

@@ -33,8 +33,8 @@ struct Options {
   int bootstrap = 0, max_iterations = 500;
 };
 
-// "--fix a=1,b=2" (the option may be repeated) as (name, value) pairs; problems into checks.
-std::vector<std::pair<std::string, double>> parse_fix(const std::vector<std::string>& args, cli::OptionChecks& checks) {
+// "--fix a=1,b=2" (the option may be repeated) as (name, value) pairs; problems into tool.
+std::vector<std::pair<std::string, double>> parse_fix(const std::vector<std::string>& args, cli::Tool& tool) {
   std::vector<std::pair<std::string, double>> fixed;
   for (const auto& arg : args) {
     std::stringstream items(arg);
@@ -43,9 +43,9 @@ std::vector<std::pair<std::string, double>> parse_fix(const std::vector<std::str
       const auto eq = item.find('=');
       double value = 0;
       if (eq == std::string::npos || eq == 0)
-        checks.require(false, "--fix: expected name=value[,name=value], e.g. --fix phi_c=0.141; got '" + item + "'");
+        tool.check(false, "--fix", "expected name=value[,name=value], e.g. --fix phi_c=0.141; got '" + item + "'");
       else if (!io::try_parse_double(item.substr(eq + 1), value))
-        checks.require(false, fmt::format("--fix {}: the value '{}' is not a number", item, item.substr(eq + 1)));
+        tool.check(false, "--fix", fmt::format("'{}' is not a finite number (in {})", item.substr(eq + 1), item));
       else
         fixed.emplace_back(item.substr(0, eq), value);
     }
@@ -142,8 +142,6 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
   for (std::size_t i : selected) binary = binary && (rows.number(i, yc) == 0 || rows.number(i, yc) == 1);
   fo.loss = o.loss == "auto" ? (model.probability && binary ? fit::Loss::MaxLikelihood : fit::Loss::Linear)
                              : fit::parse_loss(o.loss);
-  if (fo.loss == fit::Loss::MaxLikelihood && !model.probability)
-    throw UsageError(fmt::format("--loss ml is for 0/1 outcomes and the sigmoid model, not {}", model.name));
   int sc = -1;
   if (!o.sigma.empty() && o.sigma != "none") sc = rows.column(o.sigma, "--sigma");
   else if (o.sigma.empty() && fo.loss == fit::Loss::Linear) sc = rows.find(yname + "_error");
@@ -296,8 +294,9 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
 int main(int argc, char** argv) {
   return cli::run_tool("kcfit", [&] {
     Options o;
-    auto app = cli::make_app("kcfit", "Non-linear fits of the Kozeny-Carman, percolation and threshold laws "
-                                      "(thesis 5.5.6, Table S5.1) to CSV tables.");
+    cli::Tool tool("kcfit", "Non-linear fits of the Kozeny-Carman, percolation and threshold laws "
+                            "(thesis 5.5.6, Table S5.1) to CSV tables.");
+    auto* app = &tool.app();
     app->add_option("inputs", o.inputs, "CSV tables with a header row, the same columns in each ('-': stdin)");
     app->add_flag("--list-models", o.list, "print the models, their formulas, parameters and default columns, then exit");
     app->add_option("-m,--model", o.model, "model to fit (--list-models)");
@@ -321,57 +320,47 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);
     app->add_option("--free", o.free, "fit a parameter that is fixed by default (the tortuosity exponent e)")
         ->allow_extra_args(false);
-    app->add_option("--max-iter", o.max_iterations, "solver iterations per starting point")->check(CLI::Range(1, 1000000));
+    tool.add_int(*app, "--max-iter", o.max_iterations, "solver iterations per starting point", cli::closed(1, 1000000));
     app->add_option("--plot", o.plot, "also draw data and fit with gnuplot into this .png, .svg or .pdf file");
     app->add_option("--xlabel", o.xlabel,
                     "x axis label of the plot, gnuplot enhanced text (default from the column: porosity -> "
                     "'porosity {/Symbol f}', delta -> 'voxel side {/Symbol d} / D_0', ...)");
     app->add_option("--ylabel", o.ylabel, "y axis label of the plot (default from the column)");
     app->add_flag("--plot-kc", o.plot_kc, "add the classical Kozeny-Carman law C x^3/(1-x)^2, fitted too, to the plot");
-    app->add_option("--bootstrap", o.bootstrap, "also estimate errors from N bootstrap resamples")->check(CLI::Range(0, 10000000));
-    cli::add_seed_option(*app, o.common);
-    cli::add_threads_option(*app, o.common);
+    tool.add_int(*app, "--bootstrap", o.bootstrap, "also estimate errors from N bootstrap resamples",
+                 cli::closed(0, 10000000));
+    tool.add_common(*app, o.common, cli::Tool::kSeed | cli::Tool::kThreads);
     app->add_option("-o,--output", o.output, "output CSV: one row per parameter (value, error, covariance), or with --group-by one row per group "
                   "(group columns, then <p>,<p>_error ...); '-': stdout");
-    cli::add_quiet_option(*app, o.common);
-    cli::parse(*app, argc, argv);
+    tool.add_common(*app, o.common, cli::Tool::kQuiet);
+    tool.parse(argc, argv);
     if (o.list) {
+      tool.finish_checks();  // a bad number given with it
       list_models();
       return 0;
     }
-    cli::OptionChecks checks;
-    checks.require(!o.inputs.empty(), "an input CSV file is required (or --list-models)");
-    checks.require(!o.model.empty(), "--model is required (kcfit --list-models)");
+    tool.check(!o.inputs.empty(), "", "an input CSV file is required (or --list-models)");
+    tool.check(!o.model.empty(), "--model", "required (kcfit --list-models lists the models)");
     const fit::Model* model = nullptr;
-    if (!o.model.empty()) try {
-        model = &fit::find_model(o.model);
-      } catch (const UsageError& e) {
-        checks.require(false, e.what());
-      }
+    if (!o.model.empty()) tool.collect("--model", [&] { model = &fit::find_model(o.model); });
     fit::FitOptions fo;
-    fo.fixed = parse_fix(o.fix, checks);
+    fo.fixed = parse_fix(o.fix, tool);
     fo.freed = o.free;
     fo.max_iterations = o.max_iterations;
-    if (o.loss != "auto") try {
-        fit::parse_loss(o.loss);
-      } catch (const UsageError& e) {
-        checks.require(false, e.what());
-      }
-    checks.require(o.sigma.empty() || o.sigma == "none" || o.loss == "auto" || o.loss == "linear",
-                   "--sigma weights the linear loss only, not --loss " + o.loss);
+    if (o.loss != "auto") tool.collect("--loss", [&] { fit::parse_loss(o.loss); });
+    tool.check(o.loss != "ml" || !model || model->probability, "--loss",
+               "ml is for 0/1 outcomes and the sigmoid model, not " + o.model);
+    tool.check(o.sigma.empty() || o.sigma == "none" || o.loss == "auto" || o.loss == "linear", "--sigma",
+               "weights the linear loss only, not --loss " + o.loss);
     std::vector<fit::Condition> where;
-    for (const auto& w : o.where) try {
-        where.push_back(fit::parse_condition(w));
-      } catch (const UsageError& e) {
-        checks.require(false, e.what());
-      }
-    for (const auto& g : o.group_by) checks.require(!g.empty(), "--group-by: an empty column name");
+    for (const auto& w : o.where) tool.collect("--where", [&] { where.push_back(fit::parse_condition(w)); });
+    for (const auto& g : o.group_by) tool.check(!g.empty(), "--group-by", "an empty column name");
     const auto format = fit::plot_format(o.plot);
-    checks.require(o.plot.empty() || format.has_value(),
-                   "--plot " + o.plot + ": the figure's format comes from its extension: .png, .svg or .pdf");
-    checks.require(!o.plot_kc || !o.plot.empty(), "--plot-kc needs --plot");
-    checks.require(!o.plot_kc || o.group_by.empty(), "--plot-kc draws one fit: not with --group-by");
-    checks.throw_if_any();
+    tool.check(o.plot.empty() || format.has_value(), "--plot",
+               "the figure's format comes from its extension (.png, .svg or .pdf), got '" + o.plot + "'");
+    tool.check(!o.plot_kc || !o.plot.empty(), "--plot-kc", "needs --plot");
+    tool.check(!o.plot_kc || o.group_by.empty(), "--plot-kc", "draws one fit: not with --group-by");
+    tool.finish_checks();
     cli::apply_threads(o.common);
     return run(o, *model, fo, where, format.value_or(fit::PlotFormat::Png), cli::provenance("kcfit", argc, argv));
   });

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 using namespace cmp;
@@ -43,20 +44,29 @@ struct Options {
   std::string porosity_column = "porosity";
 };
 
-// A comma-separated list of positive numbers, with the tokens as typed (for {delta}, {scale}).
-std::vector<double> parse_list(const std::string& option, const std::string& text, std::vector<std::string>& names) {
+// A comma-separated list of positive numbers, with the tokens as typed (for {delta}, {scale});
+// a bad token is recorded as a problem of flag, and the list is then empty (no runs).
+std::vector<double> parse_list(cli::Tool& tool, const std::string& flag, const std::string& text,
+                               std::vector<std::string>& names) {
   std::vector<double> out;
   std::size_t at = 0;
+  bool ok = true;
   while (at <= text.size()) {
     const auto comma = std::min(text.find(',', at), text.size());
     const std::string token = text.substr(at, comma - at);
     double v = 0;
-    if (!io::try_parse_double(token, v)) throw UsageError(option + ": '" + token + "' is not a number");
-    if (!(v > 0) || !std::isfinite(v)) throw UsageError(option + " must be positive, got " + token);
+    std::string problem;
+    if (!io::try_parse_double(token, v)) problem = "'" + token + "' is not a finite number";
+    else if (!(v > 0)) problem = "must be positive, got '" + token + "'";
+    if (!problem.empty()) {
+      tool.check(false, flag, problem);
+      ok = false;
+    }
     out.push_back(v);
     names.push_back(token);
     at = comma + 1;
   }
+  if (!ok) out.clear(), names.clear();
   return out;
 }
 
@@ -67,46 +77,47 @@ struct Run {
   std::size_t packing, scale, delta;
 };
 
-void run_percolate(const Options& o, const std::string& provenance) {
+// What the options ask for, checked: the analysis options, the lists and the runs.
+struct Plan {
   voxel::PoreAnalysisOptions ao;
-  cli::OptionChecks checks;
   std::vector<std::string> delta_names, scale_names;
   std::vector<double> deltas, scales;
-  auto collect = [&](auto&& f) {
-    try {
-      f();
-    } catch (const UsageError& e) {
-      checks.require(false, e.what());
-    }
-  };
-  checks.require(!o.inputs.empty(), "no packing given (OFF or extended XYZ files)");
-  if (o.deltas.empty()) checks.require(false, "--delta is required");
-  else collect([&] { deltas = parse_list("--delta", o.deltas, delta_names); });
-  collect([&] { scales = parse_list("--scale", o.scales, scale_names); });
-  collect([&] { ao.shell_marking = voxel::shell_marking_from_name(o.marking); });
-  collect([&] { ao.sphere_marking = voxel::sphere_marking_from_name(o.sphere_marking); });
-  collect([&] { ao.connectivity = voxel::connectivity_from_name(o.connectivity); });
-  collect([&] { ao.flow_axis = voxel::axis_from_name("--axis", o.axis); });
-  checks.require(o.thickness >= 0 && std::isfinite(o.thickness), fmt::format("--thickness must be >= 0, got {}", o.thickness));
-  checks.require(o.d0 >= 0 && std::isfinite(o.d0), fmt::format("--d0 must be positive, got {}", o.d0));
-  // Runs in this order: packings, then scales, then deltas (the CSV rows and -o files alike).
   std::vector<Run> runs;
+  std::vector<std::string> vtk_names;
+};
+
+// Records every problem of the options in tool (reported by tool.finish_checks()).
+Plan check_percolate(cli::Tool& tool, const Options& o) {
+  Plan plan;
+  auto& [ao, delta_names, scale_names, deltas, scales, runs, vtk_names] = plan;
+  tool.check(!o.inputs.empty(), "", "no packing given (OFF or extended XYZ files)");
+  tool.check(!o.deltas.empty(), "--delta", "required: the lattice constant(s) in D0, e.g. --delta 0.04");
+  if (!o.deltas.empty()) deltas = parse_list(tool, "--delta", o.deltas, delta_names);
+  scales = parse_list(tool, "--scale", o.scales, scale_names);
+  tool.collect("--marking", [&] { ao.shell_marking = voxel::shell_marking_from_name(o.marking); });
+  tool.collect("--sphere-marking", [&] { ao.sphere_marking = voxel::sphere_marking_from_name(o.sphere_marking); });
+  tool.collect("--connectivity", [&] { ao.connectivity = voxel::connectivity_from_name(o.connectivity); });
+  tool.collect("--axis", [&] { ao.flow_axis = voxel::axis_from_name("--axis", o.axis); });
+  // Runs in this order: packings, then scales, then deltas (the CSV rows and -o files alike).
   for (std::size_t i = 0; i < o.inputs.size(); ++i)
     for (std::size_t s = 0; s < scales.size(); ++s)
       for (std::size_t k = 0; k < deltas.size(); ++k) runs.push_back({i, s, k});
-  std::vector<std::string> vtk_names;
   if (!o.vtk.empty()) {
     for (const auto& r : runs)
       vtk_names.push_back(cli::expand_pattern(
           cli::expand_pattern(cli::expand_pattern(o.vtk, "name", stem(o.inputs[r.packing])), "scale", scale_names[r.scale]),
           "delta", delta_names[r.delta]));
-    checks.require(std::set<std::string>(vtk_names.begin(), vtk_names.end()).size() == vtk_names.size(),
-                   "-o must tell runs apart with {name} (input file name), {scale} and/or {delta} when several "
-                   "packings, scales or deltas are given, e.g. -o 'cluster_{name}_{scale}_{delta}.vtk'");
+    tool.check(std::set<std::string>(vtk_names.begin(), vtk_names.end()).size() == vtk_names.size(), "-o",
+               "must tell runs apart with {name} (input file name), {scale} and/or {delta} when several "
+               "packings, scales or deltas are given, e.g. -o 'cluster_{name}_{scale}_{delta}.vtk'");
   }
-  checks.throw_if_any();
   ao.thickness = o.thickness;
   ao.periodic_perpendicular = o.periodic;
+  return plan;
+}
+
+void run_percolate(const Options& o, const Plan& plan, const std::string& provenance) {
+  const auto& [ao, delta_names, scale_names, deltas, scales, runs, vtk_names] = plan;
 
   // Read every packing first: a bad file stops the run before any output is written.
   std::vector<voxel::Packing> packings(o.inputs.size());
@@ -124,17 +135,22 @@ void run_percolate(const Options& o, const std::string& provenance) {
                                      p.file, delta_names[k], p.box.minCoeff(), p.box.minCoeff() / p.d0,
                                      io::format_number(p.d0), p.d0_source));
   }
+  // The CSV's temporary appears with its first row, not before: a run stopped or failed
+  // during the first analysis leaves no file at all.
   io::AtomicOutput csv_out(o.csv);
-  io::CsvWriter csv(csv_out.stream());
-  csv.meta("provenance", provenance);
-  csv.meta("connectivity", o.connectivity);
-  csv.meta("labelling", o.periodic ? "periodic perpendicular to each axis" : "not periodic (scipy.ndimage.label)");
-  csv.meta("porosity", "geometric, without voxels: porosity_method shell_volumes = 1 - sum of shell volumes / V_box; "
-                       "sphere_pair_lenses = 1 - (sum of sphere volumes - pair lenses) / V_box, exact where "
-                       "porosity_exact = 1, else an upper bound; porosity_voxels = void voxels / voxels");
-  csv.meta("units", "delta, delta_*_d0 and rh_*_d0 in D0; rh_*_delta in voxel sides (actual spacing); VTK origin and "
-                    "spacing in the packing's length units");
-  bool header = false;
+  std::optional<io::CsvWriter> csv;
+  const auto start_csv = [&](const std::vector<std::string>& columns) {
+    csv.emplace(csv_out.stream());
+    csv->meta("provenance", provenance);
+    csv->meta("connectivity", o.connectivity);
+    csv->meta("labelling", o.periodic ? "periodic perpendicular to each axis" : "not periodic (scipy.ndimage.label)");
+    csv->meta("porosity", "geometric, without voxels: porosity_method shell_volumes = 1 - sum of shell volumes / "
+                          "V_box; sphere_pair_lenses = 1 - (sum of sphere volumes - pair lenses) / V_box, exact where "
+                          "porosity_exact = 1, else an upper bound; porosity_voxels = void voxels / voxels");
+    csv->meta("units", "delta, delta_*_d0 and rh_*_d0 in D0; rh_*_delta in voxel sides (actual spacing); VTK origin "
+                       "and spacing in the packing's length units");
+    csv->header(columns);
+  };
   std::vector<std::string> summaries, inexact;
   long inexact_runs = 0;
   {
@@ -169,15 +185,14 @@ void run_percolate(const Options& o, const std::string& provenance) {
           {"scale", io::format_number(p.scale)},
           {"delta", delta_names[run.delta]}};
       for (auto& f : voxel::pore_analysis_fields(a)) fields.push_back(std::move(f));
-      if (!header) {
+      if (!csv) {
         std::vector<std::string> names;
         for (const auto& f : fields) names.push_back(f.first);
-        csv.header(names);
-        header = true;
+        start_csv(names);
       }
       std::vector<std::string> row;
       for (const auto& f : fields) row.push_back(f.second);
-      csv.row(row);
+      csv->row(row);
       if (!o.vtk.empty()) {
         io::VoxelImage<std::uint8_t> img;
         img.dims = a.grid.dims;
@@ -225,9 +240,6 @@ std::string bare_message(const InputError& e) {
 }
 
 void run_sweep(const Options& o, const std::string& provenance) {
-  cli::OptionChecks checks;
-  checks.require(o.bins >= 1, fmt::format("--bins must be >= 1, got {}", o.bins));
-  checks.throw_if_any();
   std::vector<voxel::PercolationSample> samples;
   // What must be the same in every row binned together, with where it was first seen.
   struct Seen {
@@ -317,23 +329,25 @@ void run_sweep(const Options& o, const std::string& provenance) {
 int main(int argc, char** argv) {
   return cli::run_tool("percolate", [&] {
     Options o;
-    auto app = cli::make_app("percolate",
-                             "Pore space of a packing on a lattice of side delta: porosity, connected clusters, "
+    cli::Tool tool("percolate",
+                   "Pore space of a packing on a lattice of side delta: porosity, connected clusters, "
                              "percolation per axis, hydraulic radius, the percolating cluster as VTK (thesis 5.2.2). One CSV row "
                              "per packing, scale and delta on stdout, a summary line per run on stderr (-q: none).");
+    auto* app = &tool.app();
     app->add_option("packings", o.inputs, "packing OFF files (shells; '# box' needed) or extended XYZ (.xyz: spheres "
                                           "with a radius column); '-' reads an OFF from stdin");
     app->add_option("-d,--delta", o.deltas, "lattice constant(s) delta [D0], comma separated, e.g. 0.03,0.04,0.05");
-    app->add_option("--d0", o.d0, "D0, the unit of delta [length units of the file]; default: a 'D0=' comment of the "
-                                  "file, else the volume-equivalent diameter of the mean shell (OFF) or the mean "
-                                  "unscaled sphere diameter (XYZ); the CSV says which (d0_source)");
+    tool.add_double(*app, "--d0", o.d0, "D0, the unit of delta [length units of the file]; 0 (default): a 'D0=' "
+                                         "comment of the file, else the volume-equivalent diameter of the mean shell "
+                                         "(OFF) or the mean unscaled sphere diameter (XYZ); the CSV says which "
+                                         "(d0_source)", cli::non_negative());
     app->add_option("--scale", o.scales, "spheres: multiply every radius by this factor (inflation), comma separated "
                                          "for several, e.g. 1.0,1.1,1.2; runs are packings x scales x deltas")
         ->capture_default_str();
     app->add_option("--marking", o.marking, "shells: 'triangles' (conservative triangle-voxel overlap) or 'vertices' "
                                             "(thesis; leaks when delta < edge length)")->capture_default_str();
-    app->add_option("--thickness", o.thickness, "shells: also mark voxels within this max-norm distance of the "
-                                                "surface [D0]")->capture_default_str();
+    tool.add_double(*app, "--thickness", o.thickness, "shells: also mark voxels within this max-norm distance of the "
+                                                      "surface [D0]", cli::non_negative());
     app->add_option("--sphere-marking", o.sphere_marking, "spheres: 'overlap' (any part of the voxel inside) or "
                                                           "'centre' (the voxel centre inside)")->capture_default_str();
     app->add_option("--connectivity", o.connectivity, "neighbours of a void voxel: 6 (faces, scipy's default), 18, 26")
@@ -350,27 +364,29 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app->add_flag("--timings", o.timings, "print the wall-clock time of marking and labelling per run on stderr "
                                           "(never in the CSV, so a run gives the same bytes every time)");
-    cli::add_threads_option(*app, o.common);
-    cli::add_quiet_option(*app, o.common);
+    tool.add_common(*app, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     auto* sweep = app->add_subcommand("sweep", "percolation probability vs porosity per N and delta, in porosity bins, "
                                                "from percolate's CSV rows (input of kcfit's sigmoid fit)");
     sweep->add_option("tables", o.tables, "CSV files written by percolate ('-': stdin); rows are grouped by "
                                           "particles and delta and binned over porosity, all scales together")
         ->required();
-    sweep->add_option("--bins", o.bins, "porosity bins per (N, delta) over the range of the data")->capture_default_str();
+    tool.add_int(*sweep, "--bins", o.bins, "porosity bins per (N, delta) over the range of the data", cli::at_least(1));
     sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity (geometric) or porosity_voxels")
         ->capture_default_str();
     sweep->add_option("-o,--output", o.csv, "output CSV ('-': stdout)")->capture_default_str();
 
-    cli::parse(*app, argc, argv);
+    tool.parse(argc, argv);
+    Plan plan;
+    if (!sweep->parsed()) plan = check_percolate(tool, o);
+    tool.finish_checks();
     cli::apply_threads(o.common);
     const std::string provenance = cli::provenance("percolate", argc, argv);
     if (sweep->parsed()) {
       run_sweep(o, provenance);
       return 0;
     }
-    run_percolate(o, provenance);
+    run_percolate(o, plan, provenance);
     return 0;
   });
 }
