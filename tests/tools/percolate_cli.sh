@@ -104,7 +104,7 @@ case_vtk_in_packing_units() {
   "$percolate" "$sc" --delta 0.1 --d0 2 --scale 1.2 -o c.vtk -q > p.csv || fail "run"
   /usr/bin/python3 - <<'PY' || fail "VTK geometry: $(head -10 c.vtk | grep -a -v LOOKUP)"
 raw = open("c.vtk", "rb").read()
-head = raw.split(b"LOOKUP_TABLE default\n", 1)[0].decode()
+head = raw.split(b"FIELD FieldData", 1)[0].split(b"LOOKUP_TABLE default\n", 1)[0].decode()
 lines = {l.split()[0]: [float(x) for x in l.split()[1:]] for l in head.splitlines()[2:] if l.split() and l.split()[0] in ("DIMENSIONS", "SPACING", "ORIGIN")}
 dims, spacing, origin = lines["DIMENSIONS"], lines["SPACING"], lines["ORIGIN"]
 assert dims == [20, 20, 20], dims
@@ -115,6 +115,30 @@ title = head.splitlines()[1]
 assert "delta=0.1" in title and "D0=2" in title, title
 PY
   [ "$(field p.csv nx)" = 20 ] || fail "nx"
+  # VTK's own reader: the same geometry, and delta, d0 and scale as field data (what lbflow and
+  # a ParaView user need to go back to D0 units).
+  /usr/bin/python3 - <<'PY' || fail "VTK reader"
+import vtk
+r = vtk.vtkStructuredPointsReader()
+r.SetFileName("c.vtk")
+r.Update()
+img = r.GetOutput()
+assert img.GetDimensions() == (20, 20, 20), img.GetDimensions()
+assert all(abs(s - 0.2) < 1e-12 for s in img.GetSpacing()), img.GetSpacing()
+fd = img.GetFieldData()
+values = {fd.GetArrayName(i): fd.GetArray(i).GetValue(0) for i in range(fd.GetNumberOfArrays())}
+assert values == {"delta": 0.1, "d0": 2.0, "scale": 1.2}, values
+PY
+}
+case_frames_are_packings() {
+  # Every frame of an extended XYZ is a packing: one row (and one VTK with {frame}) each.
+  cat "$sc" "$sc" >two.xyz
+  "$percolate" two.xyz --delta 0.2 -q >p.csv || fail "two frames"
+  [ "$(grep -vc '^#' p.csv)" = 3 ] || fail "rows: $(cat p.csv)"
+  [ "$(field p.csv frame 1) $(field p.csv frame 2)" = "0 1" ] || fail "frame column: $(cat p.csv)"
+  "$percolate" two.xyz --delta 0.2 -q -o 'c_{frame}.vtk' >/dev/null && [ -f c_0.vtk ] && [ -f c_1.vtk ] || fail "{frame}"
+  expect_error 2 "-o: an input holds several frames" "$percolate" two.xyz --delta 0.2 -o out.vtk
+  expect_error 2 "'-' (standard input) given more than once" "$percolate" - - --delta 0.2
 }
 case_scale_list() {
   "$percolate" "$sc" --delta 0.1,0.2 --scale 1.0,1.1 -o 'c_{name}_{scale}_{delta}.vtk' -q > p.csv || fail "run"

@@ -87,12 +87,12 @@ case_strict_d0() {
 }
 case_dash_holds_an_off_or_an_xyz() {
   "$percolate" - --delta 0.1 -q <"$sc" >xyz.csv || fail "XYZ on stdin"
-  grep -q '^-,spheres,64,' xyz.csv || fail "XYZ row: $(grep -v '^#' xyz.csv | tail -1)"
+  grep -q '^-,0,spheres,64,' xyz.csv || fail "XYZ row: $(grep -v '^#' xyz.csv | tail -1)"
   printf 'OFF\n# box 3 3 3\n# periodic 1 1 1\n# shells 1 4\n4 4 0\n1 1 1\n2 1 1\n1 2 1\n1 1 2\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >tet.off
   "$percolate" - --delta 0.1 -q <tet.off >off.csv || fail "OFF on stdin"
-  grep -q '^-,shells,1,' off.csv || fail "OFF row: $(grep -v '^#' off.csv | tail -1)"
+  grep -q '^-,0,shells,1,' off.csv || fail "OFF row: $(grep -v '^#' off.csv | tail -1)"
   "$shellpack" -q jam -N 20 --seed 3 -o - --csv j.csv | "$percolate" - --delta 0.1 -q >jam.csv || fail "jam | percolate -"
-  grep -q '^-,spheres,20,' jam.csv || fail "jam row: $(grep -v '^#' jam.csv | tail -1)"
+  grep -q '^-,0,spheres,20,' jam.csv || fail "jam row: $(grep -v '^#' jam.csv | tail -1)"
   printf 'a,b\n1,2\n' >t.csv
   bounded percolate 2 "<stdin>:1: expected a packing: .*the content is CSV" bash -c "'$percolate' - --delta 0.1 <t.csv"
 }

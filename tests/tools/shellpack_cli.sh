@@ -59,7 +59,7 @@ case_structure() {
 case_bad_input() {
   expect_error 2 "N" "$shellpack" jam -N 0 -o out.xyz
   expect_error 2 "too small" "$shellpack" jam -N 6 -o out.xyz
-  expect_error 2 "seed" "$shellpack" jam -N 16 --seeds 1:3 -o out.xyz
+  expect_error 2 "--resume: needs -o with {seed}" "$shellpack" jam -N 16 --seeds 1:3 -o out.xyz --resume
   expect_error 2 "--pmin: must be positive, got '-1'" "$shellpack" jam -N 16 --pmin -1 -o out.xyz
   expect_error 2 "--fire-f-dec: must lie in (0, 1), got '2'" "$shellpack" jam -N 16 --fire-f-dec 2 -o out.xyz
   expect_error 2 "--spheres: '20x' is not an integer" "$shellpack" jam -N 20x -o out.xyz
@@ -98,7 +98,15 @@ case_pipe_jam_to_structure() {
   "$shellpack" -q jam -N 20 --seed 2 -o - --csv j.csv | "$shellpack" structure - -q >/dev/null || fail "with --csv"
   [ "$(grep -vc '^#' j.csv)" = 2 ] || fail "--csv j.csv: $(cat j.csv)"
   expect_error 2 "--csv: the packing already goes to stdout" "$shellpack" jam -N 20 -o - --csv -
-  expect_error 2 "'-' holds one packing" "$shellpack" jam -N 20 --seeds 1:2 -o -
+  # --seeds with -o - (or a file without {seed}): every packing is a frame of one XYZ, in seed
+  # order, the same atoms as one file per seed; structure pools the frames.
+  "$shellpack" jam -N 20 --seeds 1:3 -q -o - >all.xyz || fail "--seeds -o -"
+  "$shellpack" jam -N 20 --seeds 1:3 -q -o 'one_{seed}.xyz' --csv /dev/null || fail "--seeds -o {seed}"
+  [ "$(grep -c Lattice= all.xyz)" = 3 ] || fail "not 3 frames: $(grep -c Lattice= all.xyz)"
+  cat one_1.xyz one_2.xyz one_3.xyz | grep -v Lattice= >per_seed.txt
+  grep -v Lattice= all.xyz | cmp -s - per_seed.txt || fail "frames differ from the per-seed files"
+  "$shellpack" jam -N 20 --seeds 1:3 -q -o - | "$shellpack" structure - -q >rdf3.csv || fail "3 frames | structure"
+  grep -q '^# packings=3' rdf3.csv || fail "structure of 3 frames: $(head -3 rdf3.csv)"
 }
 case_seeds_summary() {
   "$shellpack" jam -N 12 --seeds 1:3 --csv out.csv 2>err.txt || fail "run: $(cat err.txt)"

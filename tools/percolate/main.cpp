@@ -91,6 +91,8 @@ Plan check_percolate(cli::Tool& tool, const Options& o) {
   Plan plan;
   auto& [ao, delta_names, scale_names, deltas, scales, runs, vtk_names] = plan;
   tool.check(!o.inputs.empty(), "", "no packing given (OFF or extended XYZ files)");
+  tool.check(std::count(o.inputs.begin(), o.inputs.end(), std::string("-")) <= 1, "",
+             "'-' (standard input) given more than once: it can be read only once");
   tool.check(!o.deltas.empty(), "--delta", "required: the lattice constant(s) in D0, e.g. --delta 0.04");
   if (!o.deltas.empty()) deltas = parse_list(tool, "--delta", o.deltas, delta_names);
   scales = parse_list(tool, "--scale", o.scales, scale_names);
@@ -117,12 +119,45 @@ Plan check_percolate(cli::Tool& tool, const Options& o) {
 }
 
 void run_percolate(const Options& o, const Plan& plan, const std::string& provenance) {
-  const auto& [ao, delta_names, scale_names, deltas, scales, runs, vtk_names] = plan;
+  // plan.runs and plan.vtk_names checked the options per input; the runs below cover every frame.
+  const auto& ao = plan.ao;
+  const auto &delta_names = plan.delta_names, &scale_names = plan.scale_names;
+  const auto &deltas = plan.deltas, &scales = plan.scales;
 
-  // Read every packing first: a bad file stops the run before any output is written.
-  std::vector<voxel::Packing> packings(o.inputs.size());
+  // Read every packing first: a bad file stops the run before any output is written. An
+  // extended XYZ gives one packing per frame (frame 0, 1, ... as ASE and OVITO count them).
+  std::vector<std::vector<voxel::Packing>> per_input(o.inputs.size());
   parallel_for_each_job(static_cast<long>(o.inputs.size()),
-                        [&](long i) { packings[i] = voxel::read_packing(o.inputs[i], {1.0, o.d0}); });
+                        [&](long i) { per_input[i] = voxel::read_packings(o.inputs[i], {1.0, o.d0}); });
+  std::vector<voxel::Packing> packings;
+  std::vector<std::size_t> input_of;
+  std::vector<int> frame_of;
+  bool several_frames = false;
+  for (std::size_t i = 0; i < per_input.size(); ++i) {
+    several_frames |= per_input[i].size() > 1;
+    for (std::size_t f = 0; f < per_input[i].size(); ++f) {
+      packings.push_back(std::move(per_input[i][f]));
+      input_of.push_back(i);
+      frame_of.push_back(static_cast<int>(f));
+    }
+  }
+  if (several_frames && !o.vtk.empty() && o.vtk.find("{frame}") == std::string::npos)
+    throw UsageError("-o: an input holds several frames: tell them apart with {frame}, e.g. "
+                     "-o 'cluster_{name}_{frame}_{delta}.vtk'");
+  // The runs over every frame: packings, then scales, then deltas (the CSV rows and -o files alike).
+  std::vector<Run> runs;
+  std::vector<std::string> vtk_names;
+  for (std::size_t i = 0; i < packings.size(); ++i)
+    for (std::size_t s = 0; s < scales.size(); ++s)
+      for (std::size_t k = 0; k < deltas.size(); ++k) {
+        runs.push_back({i, s, k});
+        if (!o.vtk.empty())
+          vtk_names.push_back(cli::expand_pattern(
+              cli::expand_pattern(cli::expand_pattern(cli::expand_pattern(o.vtk, "name", stem(o.inputs[input_of[i]])),
+                                                      "frame", std::to_string(frame_of[i])),
+                                  "scale", scale_names[s]),
+              "delta", delta_names[k]));
+      }
   for (const auto& p : packings) {
     if (p.kind == voxel::Packing::Kind::Shells)
       for (std::size_t s = 0; s < scales.size(); ++s)
@@ -178,6 +213,7 @@ void run_percolate(const Options& o, const Plan& plan, const std::string& proven
       }
       std::vector<std::pair<std::string, std::string>> fields{
           {"file", p.file},
+          {"frame", std::to_string(frame_of[run.packing])},
           {"kind", p.kind == voxel::Packing::Kind::Shells ? "shells" : "spheres"},
           {"particles", std::to_string(p.particles())},
           {"d0", io::format_number(p.d0)},
@@ -200,6 +236,8 @@ void run_percolate(const Options& o, const Plan& plan, const std::string& proven
         img.origin = 0.5 * a.grid.spacing;  // overlays the packing; points at the voxel centres
         img.name = "cluster";
         img.data = std::move(cluster);
+        // What lbflow and a ParaView user need to put the image back in D0 units.
+        img.field_data = {{"delta", deltas[run.delta]}, {"d0", p.d0}, {"scale", p.scale}};
         io::write_vtk(vtk_names[r], img,
                       fmt::format("percolating cluster along {} of {} scale={} delta={} D0={} ({}) marking={} "
                                   "(lengths in the packing's units) | {}",
@@ -278,7 +316,7 @@ void run_sweep(const Options& o, const std::string& provenance) {
               cy = t.column("percolates");
     for (const char* key : {"connectivity", "labelling"})
       if (const auto* v = t.find_meta(key)) require_same(key, *v, path, 1);
-    const int cfile = optional_column("file"), cscale = optional_column("scale");
+    const int cfile = optional_column("file"), cframe = optional_column("frame"), cscale = optional_column("scale");
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
       const long line = t.row_lines[r];
       for (const char* key : {"kind", "marking", "flow_axis", "porosity_method"})
@@ -291,7 +329,8 @@ void run_sweep(const Options& o, const std::string& provenance) {
       s.percolates = io::parse_integer(t.rows[r][cy], path, line, "0 or 1 (percolates)", 0, 1) == 1;
       if (cscale >= 0) scales.insert(io::format_number(t.number(r, cscale)));
       if (cfile >= 0) {
-        const std::string key = t.rows[r][cfile] + "\n" + (cscale >= 0 ? t.rows[r][cscale] : "") + "\n" +
+        const std::string key = t.rows[r][cfile] + "\n" + (cframe >= 0 ? t.rows[r][cframe] : "") + "\n" +
+                                (cscale >= 0 ? t.rows[r][cscale] : "") + "\n" +
                                 io::format_number(s.delta);
         const std::string where = fmt::format("{}:{}", path == "-" ? "<stdin>" : path, line);
         auto [it, fresh] = runs_seen.try_emplace(key, where);
@@ -334,8 +373,9 @@ int main(int argc, char** argv) {
                              "percolation per axis, hydraulic radius, the percolating cluster as VTK (thesis 5.2.2). One CSV row "
                              "per packing, scale and delta on stdout, a summary line per run on stderr (-q: none).");
     auto* app = &tool.app();
-    app->add_option("packings", o.inputs, "packing OFF files (shells; '# box' needed) or extended XYZ (.xyz: spheres "
-                                          "with a radius column); '-' reads an OFF from stdin");
+    app->add_option("packings", o.inputs, "packings: OFF of shells ('# box' needed) or extended XYZ of spheres (a "
+                                          "radius column; every frame is a packing), told from the content; '-' "
+                                          "reads either from stdin");
     app->add_option("-d,--delta", o.deltas, "lattice constant(s) delta [D0], comma separated, e.g. 0.03,0.04,0.05");
     tool.add_double(*app, "--d0", o.d0, "D0, the unit of delta [length units of the file]; 0 (default): a 'D0=' "
                                          "comment of the file, else the volume-equivalent diameter of the mean shell "
@@ -357,8 +397,9 @@ int main(int argc, char** argv) {
     app->add_option("--axis", o.axis, "flow axis: the cluster written and measured (R_h) spans it")->capture_default_str();
     app->add_option("-o,--output", o.vtk, "percolating cluster as binary VTK STRUCTURED_POINTS (1 = cluster; origin "
                                           "and spacing in the packing's length units, so it overlays the packing; "
-                                          "scale, delta and D0 in the title); with several packings, scales or "
-                                          "deltas use {name}, {scale} and {delta}");
+                                          "scale, delta and D0 in the title and as field data delta, d0, scale); "
+                                          "with several packings, frames, scales or deltas use {name}, {frame}, "
+                                          "{scale} and {delta}");
     app->add_option("--csv", o.csv, "CSV output, one row per packing, scale and delta ('-': stdout); column "
                                     "porosity is the geometric porosity (porosity_method says how)")
         ->capture_default_str();

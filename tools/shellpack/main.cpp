@@ -62,15 +62,14 @@ void check_jam(cli::Tool& tool, Options& o, std::vector<std::uint64_t>& seeds) {
                          o.spheres, spheres::kMinJammingSpheres));
   tool.check(p.fire.dt_max >= p.fire.dt, "--fire-dt-max", "must be at least --fire-dt");
   seeds = tool.seed_list(o.seeding);
-  if (!o.packing_output.empty() && o.packing_output != "-")
-    tool.check_seed_pattern(seeds.size(), "-o", o.packing_output, "jammed_{seed}.xyz");
-  tool.check(seeds.size() == 1 || o.packing_output != "-", "-o",
-             "'-' holds one packing: with --seeds write files, e.g. -o 'jammed_{seed}.xyz'");
+  // -o with {seed}: one file per seed; without (a file or '-'): every packing as one frame of a
+  // single extended XYZ, in seed order (percolate reads every frame).
   const std::string csv = jam_csv_path(o);
   tool.check(!(o.packing_output == "-" && csv == "-"), "--csv",
              "the packing already goes to stdout (-o -): write the CSV to a file");
   if (o.seeding.resume) {
-    tool.check(!o.packing_output.empty() && o.packing_output != "-", "--resume", "needs -o FILE for the packings");
+    tool.check(o.packing_output.find("{seed}") != std::string::npos, "--resume",
+               "needs -o with {seed} (one packing file per seed, e.g. -o 'jammed_{seed}.xyz')");
     tool.check(csv.empty() || csv.find("{seed}") != std::string::npos, "--resume",
                "needs --csv with {seed} (one table per seed, e.g. --csv 'jam_{seed}.csv'): a combined table "
                "would miss the skipped seeds");
@@ -82,9 +81,10 @@ void run_jam(const Options& o, const std::vector<std::uint64_t>& all_seeds, cons
   const auto& p = o.jamming;
   const std::string csv = jam_csv_path(o);
   const bool csv_per_seed = csv.find("{seed}") != std::string::npos;
+  const bool packing_per_seed = o.packing_output.find("{seed}") != std::string::npos;
   const auto seed_outputs = [&](std::uint64_t s) {
     std::vector<std::string> out;
-    if (!o.packing_output.empty()) out.push_back(cli::expand_pattern(o.packing_output, "seed", std::to_string(s)));
+    if (packing_per_seed) out.push_back(cli::expand_pattern(o.packing_output, "seed", std::to_string(s)));
     if (csv_per_seed) out.push_back(cli::expand_pattern(csv, "seed", std::to_string(s)));
     return out;
   };
@@ -124,7 +124,7 @@ void run_jam(const Options& o, const std::vector<std::uint64_t>& all_seeds, cons
       return true;
     });
     const std::string seed = std::to_string(seeds[k]);
-    if (!o.packing_output.empty())
+    if (packing_per_seed)
       io::write_xyz(cli::expand_pattern(o.packing_output, "seed", seed),
                     {spheres::jammed_frame(results[k], seeds[k], provenance, p.material)});
     if (csv_per_seed) {
@@ -136,6 +136,11 @@ void run_jam(const Options& o, const std::vector<std::uint64_t>& all_seeds, cons
     bar.update(static_cast<double>(finished));
   });
   bar.finish();
+  if (!o.packing_output.empty() && !packing_per_seed) {
+    std::vector<io::XyzFrame> frames;
+    for (long k = 0; k < n; ++k) frames.push_back(spheres::jammed_frame(results[k], seeds[k], provenance, p.material));
+    io::write_xyz(o.packing_output, frames);
+  }
   if (!csv.empty() && !csv_per_seed) {
     io::AtomicOutput out(csv);
     spheres::write_jamming_table(out.stream(), results, seeds, p, provenance, o.timings);
@@ -193,7 +198,7 @@ int main(int argc, char** argv) {
         ->required();
     tool.add_seed_options(*jam, o.seeding, "packing");
     tool.add_common(*jam, o.common, cli::Tool::kThreads);
-    jam->add_option("-o,--packing", o.packing_output, "write the packing to this extended XYZ file (OVITO, ASE; '-': stdout)");
+    jam->add_option("-o,--packing", o.packing_output, "write the packing to this extended XYZ file (OVITO, ASE; '-': stdout); with --seeds, {seed} makes one file per seed, else every packing is one frame of this file, in seed order");
     jam->add_option("--csv", o.csv_output,
                     "CSV of packing figures ('-': stdout; {seed}: one per seed) [default: stdout, none with -o -]");
     jam->add_flag("--timings", o.timings, "add the wall time of each packing (`seconds`) to the CSV");
