@@ -1,5 +1,5 @@
 #pragma once
-// Interrupted runs (DESIGN.md): on SIGINT or SIGTERM a tool removes its temporaries (every
+// Interrupted runs (docs/conventions.md): on SIGINT or SIGTERM a tool removes its temporaries (every
 // io::AtomicOutput's, and the paths registered with io::TemporaryPath), clears its progress
 // bar, says "tool: interrupted" on stderr and exits 130 (SIGINT) or 143 (SIGTERM), the
 // statuses a shell gives a process killed by those signals.

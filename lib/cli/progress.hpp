@@ -1,6 +1,6 @@
 #pragma once
 // A progress bar on stderr, drawn only when stderr is a terminal and the user did not ask for
-// --quiet (DESIGN.md), redrawn at most ten times a second so it costs nothing in hot loops.
+// --quiet (docs/conventions.md), redrawn at most ten times a second so it costs nothing in hot loops.
 // The bar owns its line: call finish() (or let the bar go out of scope) before printing
 // anything else to stderr, so a summary starts on a line of its own.
 #include <chrono>

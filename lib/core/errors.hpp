@@ -1,5 +1,5 @@
 #pragma once
-// The three ways a run can fail, mapped by cli::run_tool to the exit statuses of DESIGN.md:
+// The three ways a run can fail, mapped by cli::run_tool to the exit statuses of docs/conventions.md:
 //   InputError       a malformed or unreadable input file      -> exit 2, "tool: file:line: what"
 //   UsageError       a bad option value or combination          -> exit 2, "tool: what"
 //   ComputationError the input was fine but the computation failed -> exit 1, "tool: what"

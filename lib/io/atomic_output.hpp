@@ -1,5 +1,5 @@
 #pragma once
-// Output that appears under its final name only when complete (DESIGN.md: writers write a
+// Output that appears under its final name only when complete (docs/conventions.md: writers write a
 // temporary file in the target folder and rename it). "-" writes to standard output.
 //
 // Every temporary that exists is listed in a process-wide registry, so that an interrupted

@@ -1,5 +1,5 @@
 #pragma once
-// CSV tables with provenance (DESIGN.md):
+// CSV tables with provenance (docs/formats.md):
 //   # key=value        (parameters and provenance, above the header)
 //   col_a,col_b_unit,...
 //   1.5,2,...

@@ -1,7 +1,7 @@
 #pragma once
 // An input opened by name, for every reader of lib/io: a file, standard input for "-", or a
 // stream (tests, fuzzing). Its first bytes can be looked at to tell the format from the
-// content (DESIGN.md: '-' for every format) without losing them for the reader that follows.
+// content ('-' for every format, docs/formats.md) without losing them for the reader that follows.
 #include <cstdint>
 #include <fstream>
 #include <istream>

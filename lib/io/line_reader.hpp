@@ -1,6 +1,6 @@
 #pragma once
 // Line-by-line reading of a text file (or standard input) that remembers where it is, so every
-// reader of lib/io reports problems as "file:line: what" (DESIGN.md: readers are strict).
+// reader of lib/io reports problems as "file:line: what" (readers are strict: docs/formats.md).
 // Lines are at most kMaxLineBytes long: a longer one (a binary file, /dev/zero) is an error
 // at its line, found after reading that many bytes, not after filling memory.
 #include <cstddef>

@@ -9,7 +9,7 @@
 //   nV nF nE
 //   x y z            (nV lines)
 //   3 i j k          (nF lines, 0-based indices)
-// The packing variant (DESIGN.md) adds, after the OFF line,
+// The packing variant (docs/formats.md) adds, after the OFF line,
 //   # box Lx Ly Lz
 //   # periodic 1 1 1        (one 0/1 flag per axis)
 //   # shells K n1 n2 ... nK (vertex counts, shell after shell; they add up to nV)

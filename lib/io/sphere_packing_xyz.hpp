@@ -1,6 +1,6 @@
 #pragma once
 // Sphere packings in extended XYZ, one per frame: the one reader behind `shellpack structure`
-// and percolate, with one set of rules (DESIGN.md: one reader per format, strict):
+// and percolate, with one set of rules (one reader per format, strict: docs/formats.md):
 //   - Lattice="Lx 0 0 0 Ly 0 0 0 Lz" is required, diagonal, with positive sides;
 //   - pbc is read (no pbc with a Lattice means "T T T", as in ASE); PbcRule says whether
 //     every axis must be periodic;

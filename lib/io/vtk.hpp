@@ -1,5 +1,5 @@
 #pragma once
-// Voxel images as VTK legacy STRUCTURED_POINTS files (DESIGN.md), which ParaView opens:
+// Voxel images as VTK legacy STRUCTURED_POINTS files (docs/formats.md), which ParaView opens:
 //   # vtk DataFile Version 3.0
 //   <title: tool, version, command line>
 //   BINARY

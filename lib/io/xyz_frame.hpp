@@ -1,5 +1,5 @@
 #pragma once
-// One frame of extended XYZ (the particle format of DESIGN.md, read by OVITO and ASE): per-atom
+// One frame of extended XYZ (the particle format of docs/formats.md, read by OVITO and ASE): per-atom
 // columns named by the Properties key, a cell (Lattice), periodic flags and other key=value
 // pairs of the comment line.
 #include "mesh/tri_mesh.hpp"

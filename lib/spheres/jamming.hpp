@@ -1,6 +1,6 @@
 #pragma once
-// Jammed packings of monodisperse Hertzian spheres by the thesis's protocol (5.5.1,
-// L813-821; digest 3(a-7)): random centres in a periodic cube at volume fraction 0.01, then
+// Jammed packings of monodisperse Hertzian spheres by the thesis's protocol (Section 5.5.1;
+// where the text is silent, docs/thesis-departures.md says what was chosen): random centres in a periodic cube at volume fraction 0.01, then
 // radii scaled by (1 + eps_r) or (1 - eps_r), each change followed by FIRE, inflating while
 // P < P_min and deflating while P > 2 P_min, with eps_r halved at every reversal, until
 // P_min < P < 2 P_min. A packing with rattlers is rejected and the whole procedure restarts

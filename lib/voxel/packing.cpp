@@ -31,7 +31,7 @@ Packing read_shells(io::Input& input) {
   Packing p;
   p.kind = Packing::Kind::Shells;
   p.file = path;
-  if (!off.packing.box) throw InputError(path, 1, "no '# box Lx Ly Lz' line: not a packing OFF (DESIGN.md)");
+  if (!off.packing.box) throw InputError(path, 1, "no '# box Lx Ly Lz' line: not a packing OFF (a packing OFF names its box after the OFF line)");
   p.box = *off.packing.box;
   p.periodic = off.packing.periodic;
   // Without '# periodic' the reader says "not periodic"; a packing of shellpack is periodic

@@ -1,5 +1,5 @@
 #pragma once
-// A packing as percolate reads it: shells from a packing OFF (DESIGN.md: '# box', '# periodic',
+// A packing as percolate reads it: shells from a packing OFF (docs/formats.md: '# box', '# periodic',
 // '# shells') or spheres from an extended XYZ frame (Lattice, radius column), with the length
 // D_0 that delta is measured in.
 #include "mesh/tri_mesh.hpp"
