@@ -3,6 +3,8 @@
 #include "core/errors.hpp"
 #include "io/line_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 namespace cmp::io {
@@ -81,6 +83,12 @@ std::string format_key_value(const std::string& key, const std::string& value) {
     out += c;
   }
   return out + '"';
+}
+
+bool same_key(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
 }
 
 }  // namespace cmp::io

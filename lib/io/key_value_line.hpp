@@ -20,4 +20,8 @@ KeyValues parse_key_values(std::string_view text, const std::string& file, long 
 // std::invalid_argument when key is empty or holds whitespace, '=', a quote or a bracket.
 std::string format_key_value(const std::string& key, const std::string& value);
 
+// True when a and b are the same key up to ASCII case: extended XYZ's keys (Lattice, pbc,
+// Properties) and the column names readers look for are matched this way, as ASE does.
+bool same_key(std::string_view a, std::string_view b);
+
 }  // namespace cmp::io

@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/minimum_image.hpp"
 #include "io/input.hpp"
+#include "io/key_value_line.hpp"
 #include "io/line_reader.hpp"
 #include "io/parse_number.hpp"
 #include "io/xyz.hpp"
@@ -22,13 +23,6 @@ namespace cmp::io {
 
 namespace {
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 [[noreturn]] void fail_at(const XyzFrame& frame, long line, const std::string& what) {
   if (frame.file.empty()) throw std::invalid_argument("extended XYZ frame: " + what);
   throw InputError(frame.file, line, what);
@@ -37,7 +31,7 @@ bool iequals(std::string_view a, std::string_view b) {
 const XyzColumn& radius_column(const XyzFrame& frame) {
   for (const auto& wanted : radius_column_names())
     for (const auto& c : frame.columns)
-      if (iequals(c.name, wanted)) {
+      if (same_key(c.name, wanted)) {
         if ((c.type != 'R' && c.type != 'I') || c.width != 1)
           frame.fail(fmt::format("radius column {}:{}:{}: expected one real number per atom "
                                  "({}:R:1)",

@@ -19,13 +19,6 @@ namespace cmp::io {
 
 namespace {
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 // A logical as ASE and OVITO write it; false when token is none.
 bool parse_flag(std::string_view token, bool& out) {
   if (token == "T" || token == "True" || token == "true" || token == "1") return out = true, true;
@@ -84,7 +77,7 @@ std::vector<XyzColumn> parse_comment(LineReader& in, XyzFrame& frame) {
   std::string properties = "species:S:1:pos:R:3";
   bool has_pbc = false;
   for (auto& [key, value] : pairs) {
-    if (iequals(key, "Lattice")) {
+    if (same_key(key, "Lattice")) {
       auto numbers = value;
       std::replace(numbers.begin(), numbers.end(), ',', ' ');
       const auto tokens = split_whitespace(numbers);
@@ -94,13 +87,13 @@ std::vector<XyzColumn> parse_comment(LineReader& in, XyzFrame& frame) {
         frame.lattice(k / 3, k % 3) =
             parse_double(tokens[k], in.path(), in.line_number(), "a number in Lattice");
       frame.has_lattice = true;
-    } else if (iequals(key, "pbc")) {
+    } else if (same_key(key, "pbc")) {
       const auto tokens = split_whitespace(value);
       bool ok = tokens.size() == 3;
       for (std::size_t k = 0; ok && k < 3; ++k) ok = parse_flag(tokens[k], frame.pbc[k]);
       if (!ok) in.fail("pbc must be 3 flags T or F, got " + quote_token(value));
       has_pbc = true;
-    } else if (iequals(key, "Properties")) {
+    } else if (same_key(key, "Properties")) {
       properties = value;
     } else {
       frame.info.emplace_back(std::move(key), std::move(value));
@@ -186,7 +179,7 @@ void check_frame(const XyzFrame& frame) {
   if (frame.has_lattice && !frame.lattice.allFinite())
     throw ComputationError("write_xyz: the lattice holds NaN or Inf");
   for (const auto& [key, value] : frame.info) {
-    if (iequals(key, "Lattice") || iequals(key, "Properties") || iequals(key, "pbc"))
+    if (same_key(key, "Lattice") || same_key(key, "Properties") || same_key(key, "pbc"))
       throw std::invalid_argument("write_xyz: info key '" + key + "' is reserved");
     format_key_value(key, value);  // throws on a malformed key
   }
