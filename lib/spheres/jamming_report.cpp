@@ -106,4 +106,16 @@ std::string jamming_batch_summary(const std::vector<JammingResult>& results) {
                      rejection_counts(rattlers, not_isostatic, no_window, fire_cap), seconds);
 }
 
+std::string JammingProgressNote::update(std::size_t k, const JammingProgressInfo& info) {
+  std::lock_guard lock(mutex_);
+  if (latest_[k].attempt == info.attempt && info.attempt != 0) return "";  // same try: nothing new
+  latest_[k] = info;
+  int tries = 0, rattlers = 0, not_isostatic = 0, no_window = 0, fire_cap = 0;
+  for (const auto& l : latest_) {
+    tries += l.attempt + 1, rattlers += l.rejected_for_rattlers, not_isostatic += l.rejected_not_isostatic;
+    no_window += l.rejected_no_pressure_window, fire_cap += l.rejected_fire_cap;
+  }
+  return fmt::format("try {}, rejected: {}", tries, rejection_counts(rattlers, not_isostatic, no_window, fire_cap));
+}
+
 }  // namespace cmp::spheres

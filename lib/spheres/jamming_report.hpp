@@ -4,6 +4,7 @@
 #include "spheres/jamming.hpp"
 
 #include <cstdint>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,6 +30,20 @@ void write_jamming_table(std::ostream& out, const std::vector<JammingResult>& re
 
 // "8 not isostatic, 3 rattlers" ("none" when all are 0), for progress notes and summaries.
 std::string rejection_counts(int rattlers, int not_isostatic, int no_pressure_window, int fire_cap);
+
+// The progress note of a batch of packings jammed in parallel: the tries and rejections of
+// every seed so far, "try K, rejected: 3 rattlers, ...". update() may be called from any
+// thread (each seed's progress callback).
+class JammingProgressNote {
+ public:
+  explicit JammingProgressNote(std::size_t seeds) : latest_(seeds) {}
+  // Records the latest progress of seed k; returns the note, or "" when the try is the same.
+  std::string update(std::size_t k, const JammingProgressInfo& info);
+
+ private:
+  std::mutex mutex_;
+  std::vector<JammingProgressInfo> latest_;
+};
 
 // One closing line for a --seeds run: count, mean and sd of phi_J, mean Z, tries and why the
 // rejected ones were rejected, summed wall time.

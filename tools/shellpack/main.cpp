@@ -19,7 +19,6 @@
 #include <omp.h>
 
 #include <atomic>
-#include <mutex>
 #include <memory>
 #include <iostream>
 
@@ -102,25 +101,12 @@ void run_jam(const Options& o, const std::vector<std::uint64_t>& all_seeds, cons
   std::vector<spheres::JammingResult> results(static_cast<std::size_t>(n));
   cli::ProgressBar bar("jamming", static_cast<double>(n), o.common.quiet);
   std::atomic<long> done{0};
-  // Tries and rejections so far, per seed, for the bar's note.
-  std::mutex note_mutex;
-  std::vector<spheres::JammingProgressInfo> latest(static_cast<std::size_t>(n));
-  const auto show = [&](long k, const spheres::JammingProgressInfo& info) {
-    std::lock_guard lock(note_mutex);
-    if (latest[k].attempt == info.attempt && info.attempt != 0) return;  // same try: nothing new to say
-    latest[k] = info;
-    int tries = 0, rattlers = 0, not_isostatic = 0, no_window = 0, fire_cap = 0;
-    for (const auto& l : latest) {
-      tries += l.attempt + 1, rattlers += l.rejected_for_rattlers, not_isostatic += l.rejected_not_isostatic;
-      no_window += l.rejected_no_pressure_window, fire_cap += l.rejected_fire_cap;
-    }
-    bar.set_note(fmt::format("try {}, rejected: {}", tries,
-                             spheres::rejection_counts(rattlers, not_isostatic, no_window, fire_cap)),
-                 true);
-  };
+  // Tries and rejections so far, over every seed, for the bar's note.
+  spheres::JammingProgressNote note(static_cast<std::size_t>(n));
   parallel_for_each_job(n, [&](long k) {
     results[k] = spheres::jam_spheres(o.spheres, seeds[k], p, [&](const spheres::JammingProgressInfo& info) {
-      if (bar.enabled()) show(k, info);
+      if (bar.enabled())
+        if (auto text = note.update(static_cast<std::size_t>(k), info); !text.empty()) bar.set_note(text, true);
       return true;
     });
     const std::string seed = std::to_string(seeds[k]);
