@@ -13,11 +13,11 @@ jam_row() {  # jam_row N SEEDS LABEL [extra options...]
   local n=$1 seeds=$2 label=$3
   shift 3
   local t0 t1
-  t0=$(date +%s.%N)
+  t0=$(date +%s%N)
   "$build/bin/shellpack" jam -N "$n" --seeds "$seeds" --threads 1 -q --timings "$@" \
     -o "$jam_work/j_{seed}.xyz" --csv "$jam_work/jam.csv" 2>/dev/null
-  t1=$(date +%s.%N)
-  /usr/bin/python3 - "$jam_work/jam.csv" "$n" "$label" "$(echo "$t1 - $t0" | bc -l)" "shellpack jam -N $n --seeds $seeds --threads 1 $*" <<'PY'
+  t1=$(date +%s%N)
+  /usr/bin/python3 - "$jam_work/jam.csv" "$n" "$label" "$(((t1 - t0) / 1000000))e-3" "shellpack jam -N $n --seeds $seeds --threads 1 $*" <<'PY'
 import csv, sys
 path, n, label, wall, command = sys.argv[1], int(sys.argv[2]), sys.argv[3], float(sys.argv[4]), sys.argv[5]
 rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))

@@ -21,17 +21,17 @@ cases=(
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )
 
-# Wall seconds of the best of $repeat runs of a command.
+# Wall seconds of the best of $repeat runs of a command (nanosecond clock, integer arithmetic).
 best_time() {
-  local best="" t0 t1 s
+  local best="" t0 t1 ns
   for _ in $(seq "$repeat"); do
-    t0=$(date +%s.%N)
+    t0=$(date +%s%N)
     bash -c "$1" >/dev/null 2>&1 || { echo NaN; return; }
-    t1=$(date +%s.%N)
-    s=$(echo "$t1 - $t0" | bc -l)
-    if [ -z "$best" ] || [ "$(echo "$s < $best" | bc -l)" = 1 ]; then best=$s; fi
+    t1=$(date +%s%N)
+    ns=$((t1 - t0))
+    if [ -z "$best" ] || [ "$ns" -lt "$best" ]; then best=$ns; fi
   done
-  printf '%.3f' "$best"
+  printf '%d.%03d' $((best / 1000000000)) $((best / 1000000 % 1000))
 }
 
 {
@@ -47,8 +47,8 @@ best_time() {
     load=$!
     loaded=$(best_time "${cmd//\{T\}/2}")
     kill "$load"; wait "$load" 2>/dev/null || true
-    ratio=$(echo "$loaded / $one" | bc -l 2>/dev/null || echo NaN)
-    printf '%s,"%s",%s,%s,%s,%.2f\n' "$name" "$what" "$one" "$two" "$loaded" "$ratio"
+    ratio=$(/usr/bin/python3 -c "import sys; print(f'{float(sys.argv[1]) / float(sys.argv[2]):.2f}')" "$loaded" "$one")
+    printf '%s,"%s",%s,%s,%s,%s\n' "$name" "$what" "$one" "$two" "$loaded" "$ratio"
   done
 } | tee "$out/threads_loaded.csv" >&2
 rm -rf "$work"
