@@ -5,8 +5,8 @@
 //   kcfit --list-models
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
-#include "fit/bootstrap.hpp"
 #include "fit/fit.hpp"
+#include "fit/fit_figure.hpp"
 #include "fit/fit_inputs.hpp"
 #include "fit/fit_report.hpp"
 #include "fit/fix_option.hpp"
@@ -19,9 +19,8 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
 #include <iostream>
+#include <memory>
 
 using namespace cmp;
 
@@ -62,62 +61,6 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
     report.fits.push_back(fit::fit_group(model, data.back(), fo, o.bootstrap, o.common.seed, o.group_by, g.key));
     report.sigma_zero += data.back().sigma_zero;
   }
-  const auto& fits = report.fits;
-
-  // Different voxel sides or particle numbers are different systems (the scale is not: it is
-  // what moves the porosity of one packing).
-  if (o.group_by.empty() && o.where.empty() && !o.common.quiet)
-    for (const auto& w : fit::mixed_systems(rows, selected, xc, yc)) std::cerr << "kcfit: warning: " << w << "\n";
-  // The figure first (in memory), so that a gnuplot failure leaves no output at all.
-  std::string figure;
-  fit::FitResult kc;
-  if (!o.plot.empty()) {
-    fit::PlotSpec spec;
-    spec.x_label = o.xlabel.empty() ? fit::axis_label(xname) : o.xlabel;
-    spec.y_label = o.ylabel.empty() ? fit::axis_label(yname) : o.ylabel;
-    spec.log_y = fo.loss == fit::Loss::Log;
-    spec.probability = model.probability;
-    const bool ml = fo.loss == fit::Loss::MaxLikelihood;
-    std::string how = ml ? "maximum likelihood on 0/1 outcomes" : fmt::format("least squares ({} loss{})", fit::loss_name(fo.loss), sc >= 0 ? ", weighted by " + rows.header[sc] : "");
-    std::vector<std::string> group_symbols;
-    for (const auto& g : o.group_by) group_symbols.push_back(fit::symbol(g));
-    spec.title = model.title + "\n{/*0.8 " + fit::enhanced_literal(how) +
-                 (gc.empty() ? fmt::format(", n = {}: {}", fits[0].result.n, fit::goodness_summary(fits[0].result, true)) : ", one fit per " + fmt::format("{}", fmt::join(group_symbols, " and "))) + "}";
-    for (std::size_t g = 0; g < fits.size(); ++g) {
-      const auto& r = fits[g].result;
-      const auto& d = data[g];
-      std::string label;
-      for (std::size_t k = 0; k < gc.size(); ++k)
-        label += fmt::format("{}{} = {}", k ? ", " : "", fit::symbol(o.group_by[k]), fits[g].key[k]);
-      fit::PlotPoints pts;
-      if (ml) {
-        const int bins = std::clamp(static_cast<int>(std::lround(std::sqrt(d.x.size() / 2.0))), 4, 20);
-        pts = fit::binned_outcomes(d.x, d.y, bins);
-        pts.title = gc.empty() ? fmt::format("fraction per bin of {} (68 % binomial interval)", bins) : "";
-      } else {
-        pts.x = d.x, pts.y = d.y;
-        for (std::size_t i = 0; i < d.sigma.size(); ++i) pts.low.push_back(d.y[i] - d.sigma[i]), pts.high.push_back(d.y[i] + d.sigma[i]);
-        pts.title = gc.empty() ? "data" : "";
-      }
-      spec.points.push_back(pts);
-      fit::PlotCurve curve{&model, r.value, "", 0, 1, static_cast<int>(g), false};
-      curve.title = gc.empty() ? "fit: " + fit::parameter_summary(r, true)
-                               : label + ": " + fit::parameter_summary(r, true) + (ml ? fmt::format(", pseudo-R^2 = {:.2f}", r.pseudo_r2) : "");
-      const double lo = *std::min_element(d.x.begin(), d.x.end()), hi = *std::max_element(d.x.begin(), d.x.end());
-      curve.from = model.name == "threshold" ? 0.0 : lo, curve.to = hi;
-      if (model.threshold >= 0) curve.from = std::max(lo, r.value[model.threshold] + 1e-6 * (hi - lo));
-      spec.curves.push_back(curve);
-      if (o.plot_kc) {
-        const auto& classical = fit::find_model("kc-classical");
-        fit::FitOptions ko;
-        ko.loss = fo.loss == fit::Loss::MaxLikelihood ? fit::Loss::Linear : fo.loss;
-        kc = fit::fit(classical, d.x, d.y, ko);
-        spec.curves.push_back({&classical, kc.value, fmt::format("classical Kozeny-Carman C {{/Symbol f}}^3 / (1 - {{/Symbol f}})^2, R^2 = {:.3f}", kc.r2),
-                               lo, hi, 1, true});
-      }
-    }
-    figure = fit::render_plot(plot_format, spec);
-  }
   report.input_meta = rows.meta;
   report.provenance = provenance;
   report.inputs = o.inputs;
@@ -128,7 +71,18 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
   report.where = o.where;
   report.group_by = o.group_by;
   report.bootstrap = o.bootstrap, report.seed = o.common.seed;
-  if (o.plot_kc) report.kc_classical = kc.value[0];
+
+  // Different voxel sides or particle numbers are different systems (the scale is not: it is
+  // what moves the porosity of one packing).
+  if (o.group_by.empty() && o.where.empty() && !o.common.quiet)
+    for (const auto& w : fit::mixed_systems(rows, selected, xc, yc)) std::cerr << "kcfit: warning: " << w << "\n";
+  // The figure first (in memory), so that a gnuplot failure leaves no output at all.
+  std::string figure;
+  if (!o.plot.empty()) {
+    const auto f = fit::fit_figure(report, data, o.xlabel, o.ylabel, o.plot_kc);
+    if (f.classical) report.kc_classical = f.classical->value[0];
+    figure = fit::render_plot(plot_format, f.spec);
+  }
   io::AtomicOutput out(o.output);
   io::CsvWriter csv(out.stream());
   fit::write_report_csv(csv, report);
