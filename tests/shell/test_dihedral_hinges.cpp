@@ -1,0 +1,72 @@
+#include "shell/dihedral_hinges.hpp"
+
+#include "shell_fixtures.hpp"
+
+#include "core/errors.hpp"
+#include "spheremesh/subdivision.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace cmp::shell;
+namespace fx = cmp::shell::fixtures;
+
+namespace {
+// Two unit right triangles sharing the edge (0,0,0)-(1,0,0), flat in the xy-plane, the second
+// wing folded up by `fold` radians about the x axis.
+cmp::mesh::TriMesh hinge_pair(double fold) {
+  cmp::mesh::TriMesh m;
+  m.V.resize(4, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0.3, 1, 0, 0.6, -std::cos(fold), std::sin(fold);
+  m.F.resize(2, 3);
+  m.F << 0, 1, 2, 1, 0, 3;
+  return m;
+}
+}  // namespace
+
+TEST_CASE("hinge angle is zero when flat and the fold angle otherwise", "[shell][hinge]") {
+  const auto flat = hinge_pair(0.0);
+  const DihedralHinges flat_h(flat, {1.0, 0.3, 0.1});
+  REQUIRE(flat_h.rest_angles().size() == 1);
+  CHECK(std::abs(flat_h.rest_angles()[0]) < 1e-15);
+  for (double fold : {0.2, 1.0, -0.7}) {
+    const auto m = hinge_pair(fold);
+    const auto x = fx::state(m.V);
+    CHECK(std::abs(hinge_angle(&x[0], &x[3], &x[6], &x[9])) == Approx(std::abs(fold)).epsilon(1e-13));
+  }
+  // Folding the wing up and down gives opposite signs.
+  const auto up = fx::state(hinge_pair(0.4).V), down = fx::state(hinge_pair(-0.4).V);
+  CHECK(hinge_angle(&up[0], &up[3], &up[6], &up[9]) == Approx(-hinge_angle(&down[0], &down[3], &down[6], &down[9])));
+}
+
+TEST_CASE("hinge energy of a folded flat pair is kappa_e times one minus cos of the fold", "[shell][hinge]") {
+  const MaterialParameters p{2.0, 0.25, 0.3};
+  const auto rest = hinge_pair(0.0);
+  const DihedralHinges h(rest, p);
+  // kappa_e = 3 |e|^2 kappa / A_e with |e| = 1 and A_e = 1/2 + 1/2.
+  const double kappa_e = 3.0 * p.bending_rigidity() / 1.0;
+  CHECK(h.stiffnesses()[0] == Approx(kappa_e).epsilon(1e-14));
+  CHECK(p.bending_rigidity() == Approx(2.0 * 0.027 / (12 * (1 - 0.0625))).epsilon(1e-14));
+  for (double fold : {0.1, 0.5, 1.2}) {
+    const auto x = fx::state(hinge_pair(fold).V);
+    CHECK(h.energy(x) == Approx(kappa_e * (1 - std::cos(fold))).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("hinges of a curved rest state are at rest on the icosahedron", "[shell][hinge]") {
+  const auto m = cmp::spheremesh::subdivided_sphere(cmp::spheremesh::Subdivision::Icosahedron, 1, 1.0);
+  const DihedralHinges h(m, {1.0, 0.3, 0.1});
+  REQUIRE(h.rest_angles().size() == 30);
+  // pi minus the icosahedron's dihedral angle arccos(-sqrt(5)/3), the same on every edge.
+  const double phi = M_PI - std::acos(-std::sqrt(5.0) / 3.0);
+  for (double a : h.rest_angles()) CHECK(std::abs(a) == Approx(phi).epsilon(1e-12));
+  CHECK(h.energy(fx::state(m.V)) == 0.0);
+}
+
+TEST_CASE("hinges refuse inconsistently oriented faces", "[shell][hinge]") {
+  auto m = hinge_pair(0.3);
+  m.F.row(1) << 0, 1, 3;
+  CHECK_THROWS_WITH(DihedralHinges(m, {1.0, 0.3, 0.1}), Catch::Contains("oriented inconsistently"));
+  CHECK_THROWS_WITH(DihedralHinges(hinge_pair(0.3), {1.0, 0.3, 0.0}), Catch::Contains("hinge: thickness"));
+}
