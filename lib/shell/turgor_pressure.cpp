@@ -1,6 +1,7 @@
 #include "shell/turgor_pressure.hpp"
 
 #include "core/errors.hpp"
+#include "mesh/manifold.hpp"
 
 #include <string>
 
@@ -31,6 +32,14 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
                          " of a mesh with " + std::to_string(rest.V.rows()) + " vertices");
       corners_[3 * f + k] = v;
     }
+  const auto report = mesh::manifold_report(rest.F, static_cast<int>(rest.V.rows()));
+  if (!report.closed_manifold() || !report.consistently_oriented())
+    throw UsageError("turgor: the mesh must be closed and consistently oriented to enclose a volume (" +
+                     report.describe() + ")");
+  const double v = signed_volume(std::span<const double>(rest.V.data(), rest.V.size()), corners_);
+  if (!(v > 0))
+    throw UsageError("turgor: the faces are oriented inward (signed volume " + std::to_string(v) +
+                     " <= 0); orient them outward");
 }
 
 double TurgorPressure::energy(std::span<const double> x) const { return -turgor_ * signed_volume(x, corners_); }

@@ -20,8 +20,9 @@ double signed_volume(std::span<const double> x, const std::vector<int>& corners)
 
 class TurgorPressure final : public EnergyTerm {
  public:
-  // Only the faces of `rest` are used. Throws cmp::UsageError for a non-finite Pi or a face
-  // index outside the mesh.
+  // Only the faces of `rest` are used. Throws cmp::UsageError for a non-finite Pi, a face
+  // index outside the mesh, a mesh that is not a closed, consistently oriented manifold, or one
+  // whose rest signed volume is not positive (faces oriented inward).
   TurgorPressure(const mesh::TriMesh& rest, const PressureParameters& p);
   std::string name() const override { return "turgor"; }
   double energy(std::span<const double> x) const override;

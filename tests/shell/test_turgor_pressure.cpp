@@ -60,3 +60,17 @@ TEST_CASE("turgor refuses a non-finite pressure and faces outside the mesh", "[s
   CHECK_THROWS_AS(TurgorPressure(bad, {1.0}), cmp::UsageError);
   CHECK_NOTHROW(TurgorPressure(m, {-2.0}));  // external pressure
 }
+
+TEST_CASE("turgor refuses an open mesh and an inward-oriented one", "[shell][turgor]") {
+  const auto m = fx::perturbed_icosphere(2, 0.02, 4);
+  auto open = m;
+  open.F.conservativeResize(m.F.rows() - 1, 3);
+  CHECK_THROWS_WITH(TurgorPressure(open, {1.0}), Catch::Contains("turgor: the mesh must be closed") &&
+                                                     Catch::Contains("boundary"));
+  auto inward = m;
+  inward.F.col(1).swap(inward.F.col(2));
+  CHECK_THROWS_WITH(TurgorPressure(inward, {1.0}), Catch::Contains("turgor: the faces are oriented inward"));
+  auto mixed = m;
+  std::swap(mixed.F(0, 1), mixed.F(0, 2));
+  CHECK_THROWS_WITH(TurgorPressure(mixed, {1.0}), Catch::Contains("consistently oriented"));
+}
