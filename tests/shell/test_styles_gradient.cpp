@@ -65,7 +65,7 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest) {
       const double e = term->energy(x);
       CHECK(std::isfinite(e));
       CHECK(e != 0.0);
-      CHECK(gradient_error(*term, x, 1e-6) < 1e-6);
+      CHECK(gradient_error(*term, x, 1e-6) < 1e-7);  // measured: <= 1.3e-8 (turgor), <= 7e-10 (the rest)
 
       // add_gradient adds: twice gives twice.
       std::vector<double> g1(x.size(), 0.0), g2(x.size(), 0.0);
