@@ -44,9 +44,11 @@ double hinge_angle(const double* x0, const double* x1, const double* x2, const d
   return hinge(x0, x1, x2, x3).phi;
 }
 
-DihedralHinges::DihedralHinges(const mesh::TriMesh& rest, const MaterialParameters& p) : vertex_count_(rest.V.rows()) {
-  validate(p, "hinge");
-  check_rest_mesh(rest, "hinge");
+DihedralHinges::DihedralHinges(const mesh::TriMesh& rest, const MaterialParameters& p, HingeStiffness stiffness,
+                               std::string name)
+    : name_(std::move(name)), vertex_count_(rest.V.rows()) {
+  validate(p, name_.c_str());
+  check_rest_mesh(rest, name_.c_str());
   const double kappa = p.bending_rigidity();
   const auto topo = mesh::edge_topology(rest.F);
   const double* X = rest.V.data();
@@ -60,7 +62,7 @@ DihedralHinges::DihedralHinges(const mesh::TriMesh& rest, const MaterialParamete
       std::swap(i, j);
       if (!mesh::face_has_side(rest.F, f0, i, j)) std::swap(f0, f1);
       if (!mesh::face_has_side(rest.F, f0, i, j) || !mesh::face_has_side(rest.F, f1, j, i))
-        throw UsageError("hinge: the faces " + std::to_string(topo.edge_faces(e, 0)) + " and " +
+        throw UsageError(name_ + ": the faces " + std::to_string(topo.edge_faces(e, 0)) + " and " +
                          std::to_string(topo.edge_faces(e, 1)) + " on edge " + std::to_string(topo.edges(e, 0)) +
                          "-" + std::to_string(topo.edges(e, 1)) + " are oriented inconsistently");
     }
@@ -74,7 +76,8 @@ DihedralHinges::DihedralHinges(const mesh::TriMesh& rest, const MaterialParamete
     const double area = 0.5 * (std::sqrt(dot(h.N0, h.N0)) + std::sqrt(dot(h.N1, h.N1)));
     quad_.insert(quad_.end(), {i, j, k, l});
     phi0_.push_back(h.phi);
-    kappa_.push_back(3.0 * dot(h.e, h.e) * kappa / area);
+    kappa_.push_back(stiffness == HingeStiffness::Local ? 3.0 * dot(h.e, h.e) * kappa / area
+                                                        : 2.0 * kappa / std::sqrt(3.0));
   }
 }
 

@@ -38,6 +38,10 @@ const BendingStyle kBending[] = {
      [](const mesh::TriMesh& r, const MaterialParameters& p) -> std::unique_ptr<EnergyTerm> {
        return std::make_unique<DihedralHinges>(r, p);
      }},
+    {"hinge-uniform", "normal-vector springs, one stiffness 2 kappa / sqrt(3) on every hinge, curved rest (B.35-B.36)",
+     [](const mesh::TriMesh& r, const MaterialParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<DihedralHinges>(r, p, HingeStiffness::Uniform, "hinge-uniform");
+     }},
 };
 
 const PressureStyle kPressure[] = {

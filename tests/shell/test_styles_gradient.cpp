@@ -129,6 +129,6 @@ TEST_CASE("style tables have unique names and one-line descriptions and find by 
   for (const auto& s : stretching_styles()) CHECK(std::string(s.description).find('\n') == std::string::npos);
   CHECK_THROWS_WITH(stretching_style("fem"), Catch::Contains("unknown stretching model 'fem'") &&
                                                  Catch::Contains("svk") && Catch::Contains("springs-kot"));
-  CHECK_THROWS_WITH(bending_style("none"), Catch::Contains("unknown bending model 'none' (known: hinge)"));
+  CHECK_THROWS_WITH(bending_style("none"), Catch::Contains("unknown bending model 'none' (known: hinge, hinge-uniform)"));
   CHECK_THROWS_WITH(pressure_style(""), Catch::Contains("unknown pressure model ''"));
 }
