@@ -82,6 +82,7 @@ DihedralHinges::DihedralHinges(const mesh::TriMesh& rest, const MaterialParamete
 }
 
 double DihedralHinges::energy(std::span<const double> x) const {
+  check_sizes(x);
   const double* X = x.data();
   const std::size_t nh = phi0_.size();
   double sum = 0;
@@ -94,6 +95,7 @@ double DihedralHinges::energy(std::span<const double> x) const {
 }
 
 void DihedralHinges::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
   const double* X = x.data();
   double* G = g.data();
   const std::size_t nh = phi0_.size();

@@ -76,6 +76,7 @@ EdgeSprings::EdgeSprings(const mesh::TriMesh& rest, const MaterialParameters& p,
 }
 
 double EdgeSprings::energy(std::span<const double> x) const {
+  check_sizes(x);
   const double* X = x.data();
   const std::size_t ne = rest_.size();
   double sum = 0;
@@ -90,6 +91,7 @@ double EdgeSprings::energy(std::span<const double> x) const {
 }
 
 void EdgeSprings::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
   const double* X = x.data();
   double* G = g.data();
   const std::size_t ne = rest_.size();

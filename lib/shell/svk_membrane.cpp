@@ -38,6 +38,7 @@ SvkMembrane::SvkMembrane(const mesh::TriMesh& rest, const MaterialParameters& p)
 }
 
 double SvkMembrane::energy(std::span<const double> x) const {
+  check_sizes(x);
   const double* X = x.data();
   const std::size_t nf = corners_.size() / 3;
   double sum = 0;
@@ -59,6 +60,7 @@ double SvkMembrane::energy(std::span<const double> x) const {
 }
 
 void SvkMembrane::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
   const double* X = x.data();
   double* G = g.data();
   const std::size_t nf = corners_.size() / 3;

@@ -42,9 +42,13 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
                      " <= 0); orient them outward");
 }
 
-double TurgorPressure::energy(std::span<const double> x) const { return -turgor_ * signed_volume(x, corners_); }
+double TurgorPressure::energy(std::span<const double> x) const {
+  check_sizes(x);
+  return -turgor_ * signed_volume(x, corners_);
+}
 
 void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
   const double* X = x.data();
   double* G = g.data();
   const double s = -turgor_ / 6.0;

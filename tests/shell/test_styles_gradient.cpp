@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 using namespace cmp::shell;
@@ -66,6 +67,13 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest) {
       CHECK(std::isfinite(e));
       CHECK(e != 0.0);
       CHECK(gradient_error(*term, x, 1e-6) < 1e-7);  // measured: <= 1.3e-8 (turgor), <= 7e-10 (the rest)
+
+      // A state or gradient of the wrong size is refused.
+      std::vector<double> short_x(x.begin(), x.end() - 3), g_ok(x.size(), 0.0), g_short(x.size() - 1, 0.0);
+      CHECK_THROWS_AS(term->energy(short_x), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(short_x, g_ok), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(x, g_short), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(x, std::span<double>()), std::invalid_argument);
 
       // add_gradient adds: twice gives twice.
       std::vector<double> g1(x.size(), 0.0), g2(x.size(), 0.0);
