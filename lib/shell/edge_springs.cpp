@@ -1,0 +1,110 @@
+#include "shell/edge_springs.hpp"
+
+#include "shell/rest_mesh.hpp"
+
+#include "core/errors.hpp"
+#include "mesh/edge_topology.hpp"
+
+#include <cmath>
+
+namespace cmp::shell {
+
+namespace {
+Eigen::Vector3d vertex(const mesh::TriMesh& m, int i) { return m.V.row(i).transpose(); }
+}  // namespace
+
+std::vector<double> edge_spring_constants(const mesh::TriMesh& rest, const MaterialParameters& p,
+                                          SpringConstants rule) {
+  const auto topo = mesh::edge_topology(rest.F);
+  const Eigen::Index ne = topo.edges.rows();
+  const double Y = p.stretching_modulus(), nu = p.poisson_ratio;
+  std::vector<double> k(ne, 0.0);
+  switch (rule) {
+    case SpringConstants::SeungNelson:
+      for (auto& v : k) v = std::sqrt(3.0) * Y / 2.0;
+      break;
+    case SpringConstants::Kot: {
+      double area = 0, sum_l2 = 0;
+      for (Eigen::Index f = 0; f < rest.F.rows(); ++f) {
+        const auto a = vertex(rest, rest.F(f, 0)), b = vertex(rest, rest.F(f, 1)), c = vertex(rest, rest.F(f, 2));
+        area += 0.5 * (b - a).cross(c - a).norm();
+      }
+      for (Eigen::Index e = 0; e < ne; ++e)
+        sum_l2 += (vertex(rest, topo.edges(e, 1)) - vertex(rest, topo.edges(e, 0))).squaredNorm();
+      for (auto& v : k) v = 2.0 * Y / (1.0 - nu) * area / sum_l2;
+      break;
+    }
+    case SpringConstants::VanGelder:
+      for (Eigen::Index e = 0; e < ne; ++e) {
+        const int i = topo.edges(e, 0), j = topo.edges(e, 1);
+        for (int side = 0; side < 2; ++side) {
+          const int f = topo.edge_faces(e, side);
+          if (f < 0) continue;
+          int o = -1;  // the corner of f opposite edge e
+          for (int c = 0; c < 3; ++c)
+            if (rest.F(f, c) != i && rest.F(f, c) != j) o = rest.F(f, c);
+          const auto pi = vertex(rest, i), pj = vertex(rest, j), po = vertex(rest, o);
+          const double c2 = (pj - pi).squaredNorm(), a2 = (po - pj).squaredNorm(), b2 = (po - pi).squaredNorm();
+          const double A = 0.5 * (pj - pi).cross(po - pi).norm();
+          k[e] += Y / (1.0 + nu) * A / c2 + Y * nu / (1.0 - nu * nu) * (a2 + b2 - c2) / (8.0 * A);
+        }
+      }
+      break;
+  }
+  return k;
+}
+
+EdgeSprings::EdgeSprings(const mesh::TriMesh& rest, const MaterialParameters& p, SpringConstants rule,
+                         std::string name)
+    : name_(std::move(name)), vertex_count_(rest.V.rows()) {
+  validate(p, name_.c_str());
+  check_rest_mesh(rest, name_.c_str());
+  const auto topo = mesh::edge_topology(rest.F);
+  const Eigen::Index ne = topo.edges.rows();
+  ends_.resize(2 * ne);
+  rest_.resize(ne);
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    ends_[2 * e] = topo.edges(e, 0);
+    ends_[2 * e + 1] = topo.edges(e, 1);
+    rest_[e] = (vertex(rest, topo.edges(e, 1)) - vertex(rest, topo.edges(e, 0))).norm();
+  }
+  k_ = edge_spring_constants(rest, p, rule);
+  for (Eigen::Index e = 0; e < ne; ++e)
+    if (!(k_[e] > 0))
+      throw UsageError(name_ + ": edge " + std::to_string(ends_[2 * e]) + "-" + std::to_string(ends_[2 * e + 1]) +
+                       " gets a spring constant that is not positive (an obtuse rest triangle with nu > 0?)");
+}
+
+double EdgeSprings::energy(std::span<const double> x) const {
+  check_sizes(x);
+  const double* X = x.data();
+  const std::size_t ne = rest_.size();
+  double sum = 0;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const double* a = X + 3 * ends_[2 * e];
+    const double* b = X + 3 * ends_[2 * e + 1];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - rest_[e];
+    sum += 0.5 * k_[e] * stretch * stretch;
+  }
+  return sum;
+}
+
+void EdgeSprings::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
+  const double* X = x.data();
+  double* G = g.data();
+  const std::size_t ne = rest_.size();
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int i = ends_[2 * e], j = ends_[2 * e + 1];
+    const double* a = X + 3 * i;
+    const double* b = X + 3 * j;
+    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double s = k_[e] * (1.0 - rest_[e] / l);  // dE/dl / l
+    G[3 * j] += s * dx, G[3 * j + 1] += s * dy, G[3 * j + 2] += s * dz;
+    G[3 * i] -= s * dx, G[3 * i + 1] -= s * dy, G[3 * i + 2] -= s * dz;
+  }
+}
+
+}  // namespace cmp::shell

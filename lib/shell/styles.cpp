@@ -1,0 +1,74 @@
+#include "shell/styles.hpp"
+
+#include "shell/dihedral_hinges.hpp"
+#include "shell/edge_springs.hpp"
+#include "shell/svk_membrane.hpp"
+#include "shell/turgor_pressure.hpp"
+
+#include "core/errors.hpp"
+
+namespace cmp::shell {
+
+namespace {
+
+// A spring style: the rule and the name it is registered under.
+template <SpringConstants rule>
+std::unique_ptr<EnergyTerm> make_springs(const mesh::TriMesh& rest, const MaterialParameters& p) {
+  const char* name = rule == SpringConstants::SeungNelson ? "springs-seung-nelson"
+                     : rule == SpringConstants::Kot       ? "springs-kot"
+                                                          : "springs-van-gelder";
+  return std::make_unique<EdgeSprings>(rest, p, rule, name);
+}
+
+const StretchingStyle kStretching[] = {
+    {"springs-seung-nelson", "harmonic edge springs, k = sqrt(3) E t / 2 (Seung-Nelson, B.22; nu = 1/3)",
+     &make_springs<SpringConstants::SeungNelson>},
+    {"springs-kot", "harmonic edge springs, k = 2 E t A_0 / ((1 - nu) sum L^2) (Kot et al., B.26)",
+     &make_springs<SpringConstants::Kot>},
+    {"springs-van-gelder", "harmonic edge springs, per-edge k from the rest triangles (Van Gelder, B.27)",
+     &make_springs<SpringConstants::VanGelder>},
+    {"svk", "St Venant-Kirchhoff membrane, biquadratic triangle springs (the FEM of B.28-B.34)",
+     [](const mesh::TriMesh& r, const MaterialParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<SvkMembrane>(r, p);
+     }},
+};
+
+const BendingStyle kBending[] = {
+    {"hinge", "dihedral hinges with a curved rest state, kappa = E t^3 / (12 (1 - nu^2)) (B.37-B.44)",
+     [](const mesh::TriMesh& r, const MaterialParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<DihedralHinges>(r, p);
+     }},
+    {"hinge-uniform", "normal-vector springs, one stiffness 2 kappa / sqrt(3) on every hinge, curved rest (B.35-B.36)",
+     [](const mesh::TriMesh& r, const MaterialParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<DihedralHinges>(r, p, HingeStiffness::Uniform, "hinge-uniform");
+     }},
+};
+
+const PressureStyle kPressure[] = {
+    {"turgor", "constant turgor pressure Pi, energy -Pi V of the signed enclosed volume (B.2.4)",
+     [](const mesh::TriMesh& r, const PressureParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<TurgorPressure>(r, p);
+     }},
+};
+
+template <class S>
+const S& find(std::span<const S> table, const std::string& name, const char* kind) {
+  std::string known;
+  for (const S& s : table) {
+    if (name == s.name) return s;
+    known += (known.empty() ? "" : ", ") + std::string(s.name);
+  }
+  throw UsageError(std::string("unknown ") + kind + " model '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace
+
+std::span<const StretchingStyle> stretching_styles() { return kStretching; }
+std::span<const BendingStyle> bending_styles() { return kBending; }
+std::span<const PressureStyle> pressure_styles() { return kPressure; }
+
+const StretchingStyle& stretching_style(const std::string& name) { return find(stretching_styles(), name, "stretching"); }
+const BendingStyle& bending_style(const std::string& name) { return find(bending_styles(), name, "bending"); }
+const PressureStyle& pressure_style(const std::string& name) { return find(pressure_styles(), name, "pressure"); }
+
+}  // namespace cmp::shell

@@ -1,0 +1,38 @@
+#pragma once
+// The registered shell styles, one explicit table per kind. A CLI lists a table for
+// --list-models and builds a style by name from the same entries; the generic test harness
+// (tests/shell/test_styles_gradient.cpp) checks every entry of every table.
+#include "shell/energy_term.hpp"
+#include "shell/shell_parameters.hpp"
+
+#include "mesh/tri_mesh.hpp"
+
+#include <memory>
+#include <span>
+#include <string>
+
+namespace cmp::shell {
+
+template <class Parameters>
+struct Style {
+  using parameters_type = Parameters;
+  const char* name;         // as given on the command line, e.g. "svk"
+  const char* description;  // one line for --list-models
+  // Builds the term on the rest mesh; throws cmp::UsageError for bad parameters or mesh.
+  std::unique_ptr<EnergyTerm> (*make)(const mesh::TriMesh& rest, const Parameters& p);
+};
+
+using StretchingStyle = Style<MaterialParameters>;
+using BendingStyle = Style<MaterialParameters>;
+using PressureStyle = Style<PressureParameters>;
+
+std::span<const StretchingStyle> stretching_styles();
+std::span<const BendingStyle> bending_styles();
+std::span<const PressureStyle> pressure_styles();
+
+// The entry called `name`; throws cmp::UsageError "unknown <kind> model 'x' (known: a, b)".
+const StretchingStyle& stretching_style(const std::string& name);
+const BendingStyle& bending_style(const std::string& name);
+const PressureStyle& pressure_style(const std::string& name);
+
+}  // namespace cmp::shell

@@ -1,0 +1,142 @@
+// The generic harness: every registered style of every table (lib/shell/styles.hpp) on random
+// perturbed icosahedral meshes. Adding a style to a table adds it here with no new test code.
+//   - add_gradient against a central finite difference of energy
+//   - energy invariant under rigid translations and rotations
+//   - stretching and bending: zero energy and zero gradient on the rest mesh
+#include "shell/styles.hpp"
+
+#include "shell_fixtures.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+using namespace cmp::shell;
+namespace fx = cmp::shell::fixtures;
+
+namespace {
+
+const MaterialParameters kMaterial{3.0, 0.3, 0.1};
+const PressureParameters kPressure{2.5};
+
+// A deformed state: the rest mesh inflated by 8 % and jittered by 3 % of the radius.
+std::vector<double> deformed(const cmp::mesh::TriMesh& rest, unsigned seed) {
+  auto x = fx::state(rest.V);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-0.03, 0.03);
+  for (double& v : x) v = 1.08 * v + u(rng);
+  return x;
+}
+
+// max_i |fd_i - g_i| / max_i |g_i|, with central differences of step h.
+double gradient_error(const EnergyTerm& term, std::vector<double> x, double h) {
+  std::vector<double> g(x.size(), 0.0);
+  term.add_gradient(x, g);
+  double worst = 0, scale = 0;
+  for (double v : g) scale = std::max(scale, std::abs(v));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double x0 = x[i];
+    x[i] = x0 + h;
+    const double ep = term.energy(x);
+    x[i] = x0 - h;
+    const double em = term.energy(x);
+    x[i] = x0;
+    worst = std::max(worst, std::abs((ep - em) / (2 * h) - g[i]));
+  }
+  return worst / scale;
+}
+
+template <class Table, class Parameters>
+void check_table(Table table, const Parameters& params, bool zero_at_rest) {
+  REQUIRE(!table.empty());
+  for (const auto& style : table) {
+    for (unsigned seed : {1u, 2u, 3u}) {
+      INFO("style " << style.name << " seed " << seed);
+      const auto rest = fx::perturbed_icosphere(3, 0.02, seed);
+      const auto term = style.make(rest, params);
+      CHECK(term->name() == style.name);
+      CHECK(term->vertex_count() == rest.V.rows());
+      const auto x = deformed(rest, 100 + seed);
+      const double e = term->energy(x);
+      CHECK(std::isfinite(e));
+      CHECK(e != 0.0);
+      CHECK(gradient_error(*term, x, 1e-6) < 1e-7);  // measured: <= 1.3e-8 (turgor), <= 7e-10 (the rest)
+
+      // A state or gradient of the wrong size is refused.
+      std::vector<double> short_x(x.begin(), x.end() - 3), g_ok(x.size(), 0.0), g_short(x.size() - 1, 0.0);
+      CHECK_THROWS_AS(term->energy(short_x), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(short_x, g_ok), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(x, g_short), std::invalid_argument);
+      CHECK_THROWS_AS(term->add_gradient(x, std::span<double>()), std::invalid_argument);
+
+      // add_gradient adds: twice gives twice.
+      std::vector<double> g1(x.size(), 0.0), g2(x.size(), 0.0);
+      term->add_gradient(x, g1);
+      term->add_gradient(x, g2);
+      term->add_gradient(x, g2);
+      for (std::size_t i = 0; i < x.size(); ++i) REQUIRE(g2[i] == Approx(2 * g1[i]).margin(1e-14));
+
+      const Eigen::Matrix3d R =
+          Eigen::AngleAxisd(0.7 + seed, Eigen::Vector3d(1.0, -2.0, 0.5 * seed).normalized()).toRotationMatrix();
+      const Eigen::Vector3d t(0.3, -1.2, 2.0);
+      CHECK(term->energy(fx::moved(x, Eigen::Matrix3d::Identity(), t)) == Approx(e).epsilon(1e-11));
+      CHECK(term->energy(fx::moved(x, R, Eigen::Vector3d::Zero())) == Approx(e).epsilon(1e-11));
+      CHECK(term->energy(fx::moved(x, R, t)) == Approx(e).epsilon(1e-11));
+
+      if (zero_at_rest) {
+        const auto x0 = fx::state(rest.V);
+        CHECK(std::abs(term->energy(x0)) < 1e-13 * std::abs(e));
+        std::vector<double> g0(x0.size(), 0.0);
+        term->add_gradient(x0, g0);
+        double gmax = 0, g1max = 0;
+        for (double v : g0) gmax = std::max(gmax, std::abs(v));
+        for (double v : g1) g1max = std::max(g1max, std::abs(v));
+        CHECK(gmax < 1e-11 * g1max);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("every stretching style passes the gradient and invariance checks", "[shell][styles]") {
+  check_table(stretching_styles(), kMaterial, true);
+}
+
+TEST_CASE("every bending style passes the gradient and invariance checks", "[shell][styles]") {
+  check_table(bending_styles(), kMaterial, true);
+}
+
+TEST_CASE("every pressure style passes the gradient and invariance checks", "[shell][styles]") {
+  check_table(pressure_styles(), kPressure, false);
+}
+
+TEST_CASE("style tables have unique names and one-line descriptions and find by name", "[shell][styles]") {
+  std::vector<std::string> names;
+  for (const auto& s : stretching_styles()) {
+    names.push_back(s.name);
+    CHECK(&stretching_style(s.name) == &s);
+  }
+  for (const auto& s : bending_styles()) {
+    names.push_back(s.name);
+    CHECK(&bending_style(s.name) == &s);
+  }
+  for (const auto& s : pressure_styles()) {
+    names.push_back(s.name);
+    CHECK(&pressure_style(s.name) == &s);
+  }
+  auto sorted = names;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+  for (const auto& s : stretching_styles()) CHECK(std::string(s.description).find('\n') == std::string::npos);
+  CHECK_THROWS_WITH(stretching_style("fem"), Catch::Contains("unknown stretching model 'fem'") &&
+                                                 Catch::Contains("svk") && Catch::Contains("springs-kot"));
+  CHECK_THROWS_WITH(bending_style("none"), Catch::Contains("unknown bending model 'none' (known: hinge, hinge-uniform)"));
+  CHECK_THROWS_WITH(pressure_style(""), Catch::Contains("unknown pressure model ''"));
+}
