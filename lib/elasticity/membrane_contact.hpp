@@ -41,6 +41,12 @@
 // Normalisation (the thesis does not define X^ and F^): compression X = 1 - eta_bar/R_i, force
 // F^ = F/(E t R0), pressure P* = P/P_i (Fig. B.9a).
 // Units: lengths [length], P and E [pressure], F [force], tensions [force/length].
+// Behaviour at Fig. B.9's parameters (tests/elasticity/test_membrane_contact.cpp): at small X
+// the force is linear up to a logarithm, F ~ 4 pi T delta/ln(1/X) (T the inflated tension,
+// delta = X R_i), local exponent 1.10 at X = 1e-5, 1.30 at 1e-2, 1.63 at 0.1, 2.14 at 0.2; the
+// contact region goes into compression (l0 < 1) from X ~ 0.135, which the plate and the pressure
+// support. At constant pressure the meridional tension at the contact edge vanishes near X = 0.22
+// and there is no taut solution beyond (sweep() throws). About 1 ms per compression.
 #include "elasticity/sheet.hpp"
 
 #include <vector>

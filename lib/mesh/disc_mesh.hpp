@@ -4,6 +4,8 @@
 // (equilateral-triangle) lattice of spacing a centred on the origin, clipped to r < R - 0.6 a,
 // plus a ring of round(2 pi R/a) vertices on the circle r = R, Delaunay-triangulated and lightly
 // smoothed next to the rim (Laplacian moves of the lattice vertices within 2 a of it).
+// Smallest angle 26.7 deg at R = 2.25, N = 1200 and at least 20 deg for R = 0.5-3.7, N = 19-3000.
+// The triangulation costs O(N^2) (0.1 s at N = 3000, 4 s at N = 20000).
 #include "mesh/tri_mesh.hpp"
 
 #include <vector>
