@@ -13,7 +13,8 @@
 //                   R0 = 2.25 m, t = 0.1 m, E = 25e6 Pa, nu = 1/3; far outside the linear regime)
 //   plate-uniform   r_R0, w_t*, w; Fig. B.6 (total load 1e3 N spread as q = 1e3/(pi R0^2) Pa)
 //   plate-large     P_star ((q/E)(R0/t)^4), w_max_t* (B.88/B.89), w_max_t_linear (B.87),
-//                   w_max_t_membrane (B.88's stretching term alone); Fig. B.7
+//                   w_max_t_membrane (B.88's stretching term alone), w_max_t_von_karman (the
+//                   von Karman plate equations solved numerically); Fig. B.7
 //                   (nu = 0, R0 = 2.14 m, t = 0.1 m)
 //   plates-contact  X (1 - eta_bar/R_i), F_hat* (F/(E t R0)), P_P0* (P/P_i), contact_radius_R0,
 //                   contact_angle (Gamma, rad), volume_ratio (V/V_i); constant volume, Fig. B.9
