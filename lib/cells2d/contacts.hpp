@@ -34,7 +34,7 @@ struct Domain {
     if (periodic) {
       const double ny = std::nearbyint(d[1] / ly);
       d[1] -= ny * ly;
-      d[0] -= ny * shear * lx;
+      d[0] -= ny * shear * ly;
       d[0] -= std::nearbyint(d[0] / lx) * lx;
     }
     return d;

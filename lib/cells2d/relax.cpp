@@ -1,5 +1,6 @@
 #include "cells2d/relax.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cmp::cells2d {
@@ -36,11 +37,12 @@ RelaxResult relax(std::vector<Cell>& cells, ContactEngine& engine, const RelaxPa
   }
   bool met = false;
   const auto stop_rules = [&](long, double) {
-    met = energy < per_cell || std::abs(energy - previous) <= p.tolerance * previous;
+    met = energy < per_cell || (p.force_tolerance <= 0 && std::abs(energy - previous) <= p.tolerance * previous);
     return !met;
   };
   minimise::FireParameters fire = p.fire;
   fire.max_iterations = p.max_iterations;
+  fire.force_tolerance = std::max(p.force_tolerance, 0.0);
   const auto r = minimise::fire(x, forces, fire, stop_rules, 1);
   // FIRE's last force evaluation was at x: cells hold x already.
   result.energy = energy;

@@ -5,9 +5,8 @@
 //
 // The state is (x_i, y_i, sqrt(I_i/M_i) theta_i) per cell: the thesis's mass-metric gradient
 // {F_x, F_y, (M/I) T} in coordinates where FIRE's unit masses are the cells' true masses and
-// moments of inertia. The minimiser is lib/minimise's FIRE (measured faster than a
-// Polak-Ribiere CG with line search on this problem is not claimed: FIRE is what the project
-// has; see the README's jam2d section for the iteration counts).
+// moments of inertia. The minimiser is lib/minimise's FIRE (the thesis used conjugate
+// gradients; both stop on the same rules, so the packings meet the same criterion).
 #include "cells2d/cell.hpp"
 #include "cells2d/contacts.hpp"
 #include "minimise/fire.hpp"
@@ -20,6 +19,10 @@ namespace cmp::cells2d {
 struct RelaxParameters {
   double tolerance = 1e-16;       // eps_tol^2 of both stopping rules
   long max_iterations = 2'000'000;
+  // When positive, rule (i) is replaced by max_i |f_i| <= force_tolerance [k sigma] (FIRE's
+  // own test on (F_x, F_y, T/sqrt(I/M))): what the moduli need, whose 1e-8 perturbations
+  // change the energy by less than rule (i) can see.
+  double force_tolerance = 0;
   minimise::FireParameters fire = default_fire();
 
   // FIRE's steps for this model's stiffness (unit k, unit mass per cell).
