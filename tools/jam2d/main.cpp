@@ -222,6 +222,7 @@ int main(int argc, char** argv) {
       tool.collect("--P0", [&] { o.P0s = parse_feedback_list(o.P0_text); });
       tool.collect("--dphi", [&] { o.dphis = parse_dphi_list(o.dphi_text); });
       seeds = tool.seed_list(o.seeding);
+      tool.check(!o.seeding.resume, "--resume", "sweep writes one table; run the missing seeds and join the tables");
     }
     tool.finish_checks();
     cli::apply_threads(o.common);
