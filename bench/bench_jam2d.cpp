@@ -1,12 +1,13 @@
 // Growth-driven jamming of budding cells (jam2d grow): wall time and minimisation work to the
 // jamming point of thesis 3.4.2, one colony per seed on one thread.
-//   bench_jam2d BOX SEED_FIRST SEED_LAST  ->  one CSV line per seed (no header):
+//   bench_jam2d BOX SEED_FIRST SEED_LAST [double]  ->  one CSV line per seed (no header):
 //   box,seed,cells,phi_J,Z,f_u,seconds,fire_iterations,accepted,rejected
 #include "cells2d/colony.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 using namespace cmp::cells2d;
 
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   for (long seed = first; seed <= last; ++seed) {
     GrowthParameters p;
     p.box = box;
+    p.reset_step = !(argc > 4 && std::string(argv[4]) == "double");
     const auto t0 = std::chrono::steady_clock::now();
     Colony colony(p, static_cast<std::uint64_t>(seed));
     colony.grow_to_jamming();

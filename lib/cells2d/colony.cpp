@@ -106,7 +106,7 @@ void Colony::grow_to_jamming(const std::function<void(const StepRecord&)>& obser
       jammed_ = true;
       phi_jamming_ = area_fraction();
     } else {
-      dt = params_.dt0;
+      dt = params_.reset_step ? params_.dt0 : std::min(2 * dt, params_.dt0);
     }
     record(observer, h, iterations, rejections);
     iterations = 0, rejections = 0;
@@ -142,7 +142,7 @@ void Colony::grow_beyond(double dphi, const std::function<void(const StepRecord&
     counters_.iterations += r.iterations, counters_.evaluations += r.evaluations;
     iterations += r.iterations;
     ++counters_.accepted;
-    dt = params_.dt0;
+    dt = params_.reset_step ? params_.dt0 : std::min(2 * dt, params_.dt0);
     update_rates();
     record(observer, h, iterations, rejections);
     iterations = 0, rejections = 0;

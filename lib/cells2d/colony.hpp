@@ -36,6 +36,11 @@ struct GrowthParameters {
   double rate_spread = 0.1;     // gamma_i^0 uniform in [1 - spread, 1 + spread]
   double P0 = std::numeric_limits<double>::infinity();  // feedback pressure [k]; inf = none
   bool adaptive_step = true;
+  // After an accepted step, the thesis resets dt to dt_0 (reset_step = true). With false, dt
+  // only doubles (up to dt_0): near jamming each accepted step then costs about one rejected
+  // try instead of one per halving, for the same jamming criterion (a faster path, not the
+  // thesis's; --double-step).
+  bool reset_step = true;
   double phi_margin = 0.5e-8;   // window half-width around phi_J + dphi
   double min_dt = 1e-30;        // a step this small is a failure (ComputationError)
   long max_steps = 50'000'000;  // growth steps (accepted + rejected) before giving up

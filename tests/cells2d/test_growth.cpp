@@ -98,3 +98,17 @@ TEST_CASE("cells2d jamming: the same seed gives the same colony, a copy grows as
   CHECK(a.area_fraction() == c.area_fraction());
   CHECK(a.analyse().pressure == c.analyse().pressure);
 }
+
+TEST_CASE("cells2d jamming: doubling dt after acceptance reaches the same jamming window") {
+  for (const double box : {4.0, 5.0}) {
+    GrowthParameters p;
+    p.box = box;
+    p.reset_step = false;
+    Colony colony(p, 5);
+    colony.grow_to_jamming();
+    const PackingAnalysis a = colony.analyse();
+    CHECK(a.energy / a.cells >= 1e-16);
+    CHECK(a.energy / a.cells <= 2e-16);
+    CHECK(a.Z >= a.Z_iso - 1e-12);
+  }
+}
