@@ -17,7 +17,7 @@ def _jamming(r):
 SECTIONS = {
     "jam2d_jamming.csv": _jamming,
     "jam2d_sweep.csv": lambda r: (
-        f"jam2d sweep, {r['threads']} threads",
+        f"jam2d sweep, {r['threads']} threads" + (", --double-step" if r.get("step_after_acceptance") == "double" else ""),
         f"L = {r['box']} sigma, jamming + dphi = {r['dphi']}, {r['packings']} packings",
         f"{float(r['seconds_per_packing']):.1f} s per packing (100 packings: {float(r['seconds_per_packing']) * 100 / 60:.0f} min)",
         "Fig. 3.3 point (100 packings) in minutes on 2 cores"),
