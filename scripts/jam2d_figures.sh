@@ -81,6 +81,10 @@ pmax = {}
 for P0 in ("inf", "0.005", "0.001"):
     g = table(f"{out}/jam2d_growth15_P0_{P0}.csv")
     pmax[P0] = (f(g[-1], "phi"), f(g[-1], "pressure"))
+    if P0 == "inf":
+        j = next(i for i, r in enumerate(g) if f(r, "energy_per_cell") >= 1e-16)
+        below = max(f(r, "pressure") for r in g[:j])
+        above = next(f(r, "pressure") for r in g if f(r, "phi") > f(g[j], "phi") + 0.01)
     with open(f"{out}/jam2d_fig3_1h_P0_{P0}.dat", "w") as h:
         for r in g[:: max(1, len(g) // 800)] + [g[-1]]:
             h.write(f"{r['phi']} {r['pressure']} {r['Z']}\n")
@@ -101,7 +105,8 @@ rows = [
      f"{fits['inf']['G_packing']:.3f} (seed means: {fits['inf']['G']:.3f})"),
     ("packings beyond jamming with G <= 0 (no feedback): all / at N^2 P > 1", "(not reported)",
      f"{fits['inf']['negative_G']} / {fits['inf']['negative_G_stable']} of {fits['inf']['packings']}; unjammed by a division (P < 1e-7): {fits['inf']['unjammed']}"),
-    ("P below jamming", "0", "0 (growth.csv: V/(kN) < 1e-16 before jamming)"),
+    ("P below jamming (largest over the growth, L = 15 sigma)", "0",
+     f"{below:.1e} k (the residue of V/(kN) < 1e-16); {above:.1e} k at phi_J + 0.01"),
     ("P at the largest phi, L = 15, no feedback", "≈ 0.1 k near phi = 1", f"{pmax['inf'][1]:.4f} k at phi = {pmax['inf'][0]:.4f}"),
     ("Z at dphi = 0.02, P0 = inf / 0.005 / 0.001", "rises with feedback (Fig. 3.1i)",
      " / ".join(f"{Z_at(p, 0.02):.3f}" for p in ("inf", "0.005", "0.001"))),
