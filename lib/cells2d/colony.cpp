@@ -88,7 +88,7 @@ void Colony::grow_to_jamming(const std::function<void(const StepRecord&)>& obser
     const double h = step_size(dt);
     grow_cells(cells_, h, rng_, params_.rate_spread);
     time_ += h;
-    const RelaxResult r = relax(cells_, *engine_, params_.relax);
+    const RelaxResult r = relax_or_fail(cells_, *engine_, params_.relax, "growth");
     counters_.iterations += r.iterations, counters_.evaluations += r.evaluations;
     iterations += r.iterations;
     const double per_cell = r.energy / static_cast<double>(cells_.size());
@@ -138,7 +138,7 @@ void Colony::grow_beyond(double dphi, const std::function<void(const StepRecord&
         throw ComputationError("growth beyond jamming: the growth step fell below the smallest allowed");
       continue;
     }
-    const RelaxResult r = relax(cells_, *engine_, params_.relax);
+    const RelaxResult r = relax_or_fail(cells_, *engine_, params_.relax, "growth");
     counters_.iterations += r.iterations, counters_.evaluations += r.evaluations;
     iterations += r.iterations;
     ++counters_.accepted;

@@ -97,14 +97,15 @@ class Colony {
   Colony& operator=(const Colony&) = delete;
 
  private:
-  // One try: grow for dt (scaled by the adaptive rule), relax unless skip_relax says the
-  // area fraction already rejects it. Returns the relaxed energy per cell.
+  // The state a rejected try goes back to.
   struct Snapshot {
     std::vector<Cell> cells;
     Random rng;
     double time;
   };
+  // gamma_i from the bud pressures (beyond jamming with finite P0), else gamma_i^0.
   void update_rates();
+  // dt scaled by the adaptive rule.
   double step_size(double dt) const;
   void record(const std::function<void(const StepRecord&)>& observer, double dt, long iterations, int rejections);
 

@@ -11,7 +11,11 @@ Moduli measure_moduli(std::vector<Cell> cells, double box, const ContactLawStyle
   Domain domain;
   domain.lx = domain.ly = box;
   ContactEngine engine(domain, law);
-  m.iterations += relax(cells, engine, p.relax).iterations;
+  const auto count = [&](const RelaxResult& r) {
+    m.iterations += r.iterations;
+    m.relaxed = m.relaxed && r.converged;
+  };
+  count(relax(cells, engine, p.relax));
   m.packing = analyse_packing(cells, engine);
   const double phi = m.packing.area_fraction, P = m.packing.pressure;
 
@@ -23,7 +27,7 @@ Moduli measure_moduli(std::vector<Cell> cells, double box, const ContactLawStyle
     Domain small = domain;
     small.lx = small.ly = box * scale;
     ContactEngine e(small, law);
-    m.iterations += relax(squeezed, e, p.relax).iterations;
+    count(relax(squeezed, e, p.relax));
     const PackingAnalysis a = analyse_packing(squeezed, e);
     m.bulk = phi * (a.pressure - P) / (a.area_fraction - phi);
   }
@@ -33,7 +37,7 @@ Moduli measure_moduli(std::vector<Cell> cells, double box, const ContactLawStyle
     for (Cell& c : sheared) c.x += p.strain * c.y;
     ContactEngine e(domain, law);
     e.set_shear(p.strain);
-    m.iterations += relax(sheared, e, p.relax).iterations;
+    count(relax(sheared, e, p.relax));
     const PackingAnalysis a = analyse_packing(sheared, e);
     m.shear = -(a.pressure_tensor(0, 1) - m.packing.pressure_tensor(0, 1)) / p.strain;
   }

@@ -33,6 +33,7 @@ struct Moduli {
   double bulk = 0;          // B [k]
   double shear = 0;         // G [k]
   long iterations = 0;      // FIRE steps of the three relaxations
+  bool relaxed = true;      // all three met max|f_i| <= tolerance within max_iterations
 };
 
 // cells are taken as they are (call canonical_cells first to match a file to the last digit).

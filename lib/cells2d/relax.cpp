@@ -1,5 +1,7 @@
 #include "cells2d/relax.hpp"
 
+#include "core/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,6 +52,15 @@ RelaxResult relax(std::vector<Cell>& cells, ContactEngine& engine, const RelaxPa
   result.evaluations = evaluations;
   result.converged = met || r.converged();
   return result;
+}
+
+RelaxResult relax_or_fail(std::vector<Cell>& cells, ContactEngine& engine, const RelaxParameters& p,
+                          const char* what) {
+  const RelaxResult r = relax(cells, engine, p);
+  if (!r.converged)
+    throw ComputationError(std::string(what) + ": the minimisation met no stopping rule in " +
+                           std::to_string(p.max_iterations) + " FIRE iterations");
+  return r;
 }
 
 }  // namespace cmp::cells2d

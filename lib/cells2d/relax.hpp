@@ -46,5 +46,9 @@ struct RelaxResult {
 // Relaxes cells in place (positions and angles; buds unchanged). Throws
 // cmp::ComputationError on a non-finite force. The engine must hold the cells' box.
 RelaxResult relax(std::vector<Cell>& cells, ContactEngine& engine, const RelaxParameters& parameters);
+// relax(), and cmp::ComputationError naming `what` when no stopping rule is met within
+// max_iterations.
+RelaxResult relax_or_fail(std::vector<Cell>& cells, ContactEngine& engine, const RelaxParameters& parameters,
+                          const char* what);
 
 }  // namespace cmp::cells2d

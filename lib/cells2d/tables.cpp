@@ -45,14 +45,15 @@ std::vector<std::string> growth_row(const StepRecord& r) {
 
 std::vector<std::string> packing_columns() {
   return {"cells", "box", "phi", "pressure", "pressure_xx", "pressure_yy", "pressure_xy", "B", "G", "Z", "Z_iso",
-          "f_u", "rattlers", "contacts", "energy_per_cell"};
+          "f_u", "rattlers", "contacts", "energy_per_cell", "relaxed"};
 }
 
 std::vector<std::string> packing_row(const Moduli& m, double box) {
   const PackingAnalysis& p = m.packing;
   return {num(p.cells), num(box), num(p.area_fraction), num(p.pressure), num(p.pressure_tensor(0, 0)),
           num(p.pressure_tensor(1, 1)), num(p.pressure_tensor(0, 1)), num(m.bulk), num(m.shear), num(p.Z),
-          num(p.Z_iso), num(p.f_u), num(p.rattlers), num(p.network_contacts), num(p.energy / p.cells)};
+          num(p.Z_iso), num(p.f_u), num(p.rattlers), num(p.network_contacts), num(p.energy / p.cells),
+          std::string(m.relaxed ? "1" : "0")};
 }
 
 std::vector<double> parse_dphi_list(const std::string& text) {

@@ -17,7 +17,8 @@ std::vector<std::string> growth_columns();
 std::vector<std::string> growth_row(const StepRecord& r);
 
 // One row per packing: cells, box, phi, pressure, pressure_xx, pressure_yy, pressure_xy, B,
-// G, Z, Z_iso, f_u, rattlers, contacts, energy_per_cell.
+// G, Z, Z_iso, f_u, rattlers, contacts, energy_per_cell, relaxed (1 when the moduli's three
+// relaxations reached force balance, 0 when one ran out of iterations: B and G less exact).
 std::vector<std::string> packing_columns();
 std::vector<std::string> packing_row(const Moduli& m, double box);
 
