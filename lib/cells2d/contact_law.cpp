@@ -1,0 +1,31 @@
+#include "cells2d/contact_law.hpp"
+
+#include "core/errors.hpp"
+
+#include <cmath>
+
+namespace cmp::cells2d {
+
+double HertzLaw::energy(double overlap) { return 0.4 * overlap * overlap * std::sqrt(overlap); }
+double HertzLaw::force(double overlap) { return overlap * std::sqrt(overlap); }
+
+const std::vector<ContactLawStyle>& contact_laws() {
+  static const std::vector<ContactLawStyle> table = {
+      {"harmonic", "V = k delta^2 / 2 between overlapping lobes (thesis S3.2)", 0, &HarmonicLaw::energy,
+       &HarmonicLaw::force},
+      {"hertz", "V = (2/5) k delta^(5/2) (soft-sphere law, not the thesis's for budding cells)", 1,
+       &HertzLaw::energy, &HertzLaw::force},
+  };
+  return table;
+}
+
+const ContactLawStyle& contact_law(const std::string& name) {
+  std::string names;
+  for (const auto& s : contact_laws()) {
+    if (s.name == name) return s;
+    names += (names.empty() ? "" : ", ") + s.name;
+  }
+  throw UsageError("unknown contact law '" + name + "' (choose one of " + names + ")");
+}
+
+}  // namespace cmp::cells2d

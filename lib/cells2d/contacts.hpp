@@ -1,0 +1,109 @@
+#pragma once
+// Energy, forces and torques of a set of budding cells (thesis S3.2-S3.4): a contact law
+// between every pair of overlapping lobes of different cells, in a rectangular box that is
+// periodic (Chapter 3) or not (the walls of a chamber are a separate term), optionally with
+// Lees-Edwards images for simple shear. Shared by every model built on lib/cells2d.
+//
+// The lobe pairs come from a Verlet list over the lobe centres (lib/neighbours), rebuilt only
+// when a lobe has moved more than half the skin since the last build, so a minimisation pays
+// for the neighbour search a few times, not at every force evaluation. The force loop is a
+// template instantiated per contact law. Serial and deterministic: a sweep runs many
+// colonies in parallel instead.
+#include "cells2d/cell.hpp"
+#include "cells2d/contact_law.hpp"
+#include "neighbours/neighbour_list.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace cmp::cells2d {
+
+// The simulation box [0, lx) x [0, ly) [sigma].
+struct Domain {
+  double lx = 10, ly = 10;
+  bool periodic = true;  // along x and y
+  // Lees-Edwards simple shear strain (periodic only): the image of a cell across the y
+  // boundary is shifted by shear * ly along x, so x -> x + shear * y is an affine state.
+  double shear = 0;
+
+  // r_a - r_b reduced to the nearest image (Lees-Edwards when sheared).
+  Eigen::Vector2d separation(Eigen::Vector2d d) const {
+    if (periodic) {
+      const double ny = std::nearbyint(d[1] / ly);
+      d[1] -= ny * ly;
+      d[0] -= ny * shear * ly;
+      d[0] -= std::nearbyint(d[0] / lx) * lx;
+    }
+    return d;
+  }
+};
+
+// One overlapping lobe pair: lobes a < b (lobe 2i mother, 2i + 1 bud of cell i).
+struct Contact {
+  int a, b;
+  Eigen::Vector2d d;  // centre of a minus centre of b (nearest image) [sigma]
+  double distance;    // |d| [sigma]
+  double overlap;     // delta > 0 [sigma]
+  double force;       // repulsive force magnitude [k sigma]; on a it is force * d / distance
+};
+
+class ContactEngine {
+ public:
+  // Throws cmp::UsageError when the box is smaller than 2 (cutoff + skin) along a periodic
+  // axis or not positive. skin [sigma]: the Verlet list's margin.
+  ContactEngine(const Domain& domain, const ContactLawStyle& law, double skin = 0.3);
+
+  const Domain& domain() const { return domain_; }
+  const ContactLawStyle& law() const { return *law_; }
+  // Changes the Lees-Edwards strain (by at most ~1e-3: the list keeps a margin for it).
+  void set_shear(double strain) { domain_.shear = strain; }
+
+  // Energy V [k sigma^2]; force (3 per cell, 3 * cells.size()) receives F_x, F_y [k sigma]
+  // and the torque T = -dV/dtheta [k sigma^2] of every cell. The hot path.
+  double evaluate(const std::vector<Cell>& cells, double* force);
+  // Energy alone [k sigma^2].
+  double energy(const std::vector<Cell>& cells);
+
+  // Calls f(const Contact&) for every overlapping pair of lobes of different cells, once.
+  template <class F>
+  void for_each_contact(const std::vector<Cell>& cells, F&& f);
+
+  long list_builds() const { return list_.builds(); }
+
+ private:
+  // Lobe centres and diameters from the cells; rebuilds the Verlet list when needed.
+  void place_lobes(const std::vector<Cell>& cells);
+  template <class Law>
+  double evaluate_with(const std::vector<Cell>& cells, double* force) const;
+
+  Domain domain_;
+  const ContactLawStyle* law_;
+  neighbours::NeighbourList list_;
+  mesh::VertexMatrix lobes_;            // 2N by 3 (z = 0)
+  std::vector<double> radius_;          // 2N lobe radii
+  std::vector<double> offset_x_, offset_y_;  // 2N lobe centre - cell centre
+};
+
+// ---- templates ----
+
+template <class F>
+void ContactEngine::for_each_contact(const std::vector<Cell>& cells, F&& f) {
+  place_lobes(cells);
+  const int lobes = static_cast<int>(radius_.size());
+  for (int i = 0; i < lobes; ++i) {
+    const Eigen::Vector2d pi(lobes_(i, 0), lobes_(i, 1));
+    for (int j : list_.neighbours_of(i)) {
+      if (j <= i || (j >> 1) == (i >> 1)) continue;
+      const Eigen::Vector2d d = domain_.separation(pi - Eigen::Vector2d(lobes_(j, 0), lobes_(j, 1)));
+      const double reach = radius_[i] + radius_[j], r2 = d.squaredNorm();
+      if (r2 >= reach * reach || r2 == 0) continue;
+      const double r = std::sqrt(r2), overlap = reach - r;
+      f(Contact{i, j, d, r, overlap, law_->force(overlap)});
+    }
+  }
+}
+
+}  // namespace cmp::cells2d

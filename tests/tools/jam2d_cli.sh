@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# jam2d as a user runs it. `jam2d_cli.sh --list` prints the cases; `jam2d_cli.sh CASE` runs one
+# (ctest registers each). Needs CMP_BIN (the built programs).
+set -uo pipefail
+bin=${CMP_BIN:-build/bin}
+jam2d="$bin/jam2d"
+if [ "${1:-}" != --list ]; then
+  case $bin in /*) ;; *) jam2d="$PWD/$jam2d" ;; esac
+fi
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=jam2d
+enter_scratch_dir
+
+# A hand-made packing of two cells in a box of 5 sigma (mother radius 1/2, tangent buds).
+good_packing() {
+  cat <<'XYZ'
+4
+Lattice="5 0 0 0 5 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1:cell:I:1:lobe:I:1 pbc="T T F"
+X 1 1 0 0.5 0 0
+X 1.75 1 0 0.25 0 1
+X 3 3 0 0.5 1 0
+X 3 3.6 0 0.1 1 1
+XYZ
+}
+
+case_help() {
+  "$jam2d" --help >help.txt || fail "--help"
+  for sub in grow moduli sweep; do grep -q "$sub" help.txt || fail "--help lacks $sub"; done
+  "$jam2d" grow --help >grow.txt || fail "grow --help"
+  for opt in --box --seed --dphi --P0 --packing --csv --trajectory --every --contact --dt0 --fixed-step; do
+    grep -q -- "$opt" grow.txt || fail "grow --help lacks $opt"
+  done
+  "$jam2d" sweep --help >sweep.txt || fail "sweep --help"
+  for opt in --box --seeds --dphi --P0 --threads; do grep -q -- "$opt" sweep.txt || fail "sweep --help lacks $opt"; done
+  "$jam2d" --version | grep -Eq "^jam2d [0-9]" || fail "--version"
+}
+
+case_grow_writes_table_and_packing() {
+  "$jam2d" grow --box 4 --seed 3 -o jammed.xyz -q >growth.csv || fail "grow"
+  grep -q "^step,time,dt,cells,phi,pressure,Z,f_u,rattlers,mean_rate,energy_per_cell,rejected,fire_iterations$" growth.csv ||
+    fail "growth header: $(grep -v '^#' growth.csv | head -1)"
+  grep -q "^# units=lengths sigma" growth.csv || fail "units line"
+  grep -q '^# provenance=jam2d ' growth.csv || fail "provenance"
+  head -2 jammed.xyz | tail -1 | grep -q 'pbc="T T F"' || fail "pbc"
+  head -2 jammed.xyz | tail -1 | grep -q 'Properties=species:S:1:pos:R:3:radius:R:1:cell:I:1:lobe:I:1:orientation:R:1:pressure:R:1:contacts:I:1' ||
+    fail "properties: $(head -2 jammed.xyz | tail -1)"
+  cells=$(grep -v '^#' growth.csv | tail -1 | cut -d, -f4)
+  [ "$(head -1 jammed.xyz)" -eq $((2 * cells)) ] || fail "one row per lobe"
+  # The last row is jammed: tol <= V/(kN) <= 2 tol.
+  grep -v '^#' growth.csv | tail -1 | awk -F, '{ exit !($11 >= 1e-16 && $11 <= 2e-16) }' || fail "not in the jamming window"
+}
+
+case_ase_reads_packing() {
+  "$jam2d" grow --box 4 --seed 2 -o jammed.xyz -q --csv '' || fail "grow"
+  /usr/bin/python3 - <<'PY' || fail "ASE"
+import ase.io
+a = ase.io.read("jammed.xyz")
+assert list(a.pbc) == [True, True, False], a.pbc
+assert abs(a.cell[0][0] - 4) < 1e-12
+assert set(a.arrays["lobe"]) <= {0, 1}
+assert len(a) == 2 * (max(a.arrays["cell"]) + 1)
+PY
+}
+
+case_moduli_of_grown_packing() {
+  "$jam2d" grow --box 4.5 --seed 7 --dphi 0.01 -o pack.xyz -q --csv '' || fail "grow"
+  "$jam2d" moduli pack.xyz -o moduli.csv || fail "moduli"
+  grep -q "^file,frame,cells,box,phi,pressure,pressure_xx,pressure_yy,pressure_xy,B,G,Z,Z_iso,f_u,rattlers,contacts,energy_per_cell,relaxed$" moduli.csv ||
+    fail "moduli header"
+  grep -v '^#' moduli.csv | tail -1 | awk -F, '{ exit !($10 > 0 && $6 > 0 && $12 >= $13 - 1e-9) }' || fail "B, P, Z: $(tail -1 moduli.csv)"
+  "$jam2d" moduli - <pack.xyz >again.csv || fail "moduli from stdin"
+  diff <(grep -v '^#' moduli.csv | cut -d, -f3-) <(grep -v '^#' again.csv | cut -d, -f3-) || fail "stdin differs"
+}
+
+case_sweep_same_on_one_and_two_threads() {
+  "$jam2d" sweep --box 4 --seeds 1:4 --dphi 0,0.01 --P0 inf,0.001 -q --threads 1 >one.csv || fail "1 thread"
+  "$jam2d" sweep --box 4 --seeds 1:4 --dphi 0,0.01 --P0 inf,0.001 -q --threads 2 >two.csv || fail "2 threads"
+  diff <(grep -v '^# provenance' one.csv) <(grep -v '^# provenance' two.csv) || fail "thread count changes the table"
+  [ "$(grep -vc '^#' one.csv)" -eq 17 ] || fail "one row per seed, P0 and dphi (+ header)"
+}
+
+case_bad_packing_lobe_missing() {
+  good_packing | sed '5d; 1s/4/3/' >p.xyz
+  expect_error 2 "p.xyz:5: cell 1 has a bud row but no mother row" "$jam2d" moduli p.xyz -o out.csv
+}
+case_bad_packing_cell_three_times() {
+  { good_packing | sed '1s/4/5/'; echo "X 1 1 0 0.5 0 0"; } >p.xyz
+  expect_error 2 "p.xyz:7: cell 0 appears again as a mother" "$jam2d" moduli p.xyz -o out.csv
+}
+case_bad_packing_bud_larger_than_mother() {
+  good_packing | sed 's/^X 1.75 1 0 0.25 0 1$/X 2.25 1 0 0.75 0 1/' >p.xyz
+  expect_error 2 "p.xyz:4: bud radius must lie in \[0, 1/2\] (not larger than its mother), got 0.75" "$jam2d" moduli p.xyz -o out.csv
+}
+case_bad_packing_box() {
+  good_packing | sed 's/Lattice="5 0 0 0 5/Lattice="0 0 0 0 0/' >p.xyz
+  expect_error 2 "p.xyz:2: the box must have positive sides" "$jam2d" moduli p.xyz -o out.csv
+}
+case_bad_box_option() {
+  expect_error 2 "--box: must be positive, got '-3'" "$jam2d" grow --box -3 -o out.xyz --csv out.csv
+}
+case_bad_P0() {
+  expect_error 2 "--P0: P0 must be positive (inf for no feedback), got '0'" "$jam2d" grow --box 4 --P0 0 -o out.xyz --csv out.csv
+  expect_error 2 "--P0: P0 must be positive" "$jam2d" sweep --box 4 --seeds 1:2 --P0 inf,-0.1 -o out.csv
+}
+case_unknown_option() {
+  expect_error 2 "--frobnicate" "$jam2d" grow --box 4 --frobnicate -o out.xyz --csv out.csv
+}
+
+run_cases "$@"

@@ -1,0 +1,240 @@
+// jam2d: budding cells in 2D (thesis Chapter 3; the chamber of Chapter 2 is to come).
+//   jam2d grow --box 15 --seed 1 -o jammed.xyz > growth.csv          from two cells until jammed
+//   jam2d grow --box 15 --seed 1 --dphi 0.05 --P0 0.001 -o pack.xyz  beyond jamming, with feedback
+//   jam2d moduli pack.xyz > moduli.csv                               P, B, G, Z, f_u of static packings
+//   jam2d sweep --box 10 --seeds 1:100 --dphi 0:0.1:0.01 --P0 inf,0.005,0.001 > sweep.csv
+#include "cells2d/packing_xyz.hpp"
+#include "cells2d/tables.hpp"
+#include "cli/progress.hpp"
+#include "cli/tool.hpp"
+#include "core/errors.hpp"
+#include "core/parallel_for.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv.hpp"
+#include "io/xyz.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <iostream>
+#include <memory>
+
+using namespace cmp;
+using namespace cmp::cells2d;
+
+namespace {
+
+struct Options {
+  cli::CommonOptions common;
+  cli::SeedOptions seeding;
+  GrowthParameters growth;
+  std::string P0_text = "inf", dphi_text = "0", contact = "harmonic";
+  double dphi = 0;
+  std::string packing_output, csv_output = "-", trajectory_output;
+  long every = 0;
+  bool fixed_step = false, double_step = false;
+  std::vector<std::string> inputs;
+  std::string output = "-";
+  std::vector<double> dphis, P0s;
+};
+
+void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
+  tool.add_double(sub, "--box", o.growth.box, "side L of the periodic square box [sigma]", cli::positive());
+  sub.add_option("--contact", o.contact, "contact law between lobes: " + [] {
+    std::string s;
+    for (const auto& l : contact_laws()) s += (s.empty() ? "" : "; ") + l.name + " (" + l.description + ")";
+    return s;
+  }());
+  tool.add_double(sub, "--dt0", o.growth.dt0, "growth step dt_0 [1/gamma0]", cli::positive());
+  sub.add_flag("--fixed-step", o.fixed_step, "no adaptive step beyond jamming (thesis Fig. S3.5)");
+  sub.add_flag("--double-step", o.double_step,
+               "after an accepted step double dt (up to dt_0) instead of the thesis's reset to dt_0: the same "
+               "jamming criterion, several times faster near jamming");
+}
+
+void check_growth(cli::Tool& tool, Options& o) {
+  o.growth.contact = o.contact;
+  o.growth.adaptive_step = !o.fixed_step;
+  o.growth.reset_step = !o.double_step;
+  tool.check(o.growth.box >= 2.61 || o.growth.box <= 0, "--box", "must be at least 2.61 sigma (twice the lobe cutoff and skin)");
+  tool.collect("--contact", [&] { contact_law(o.contact); });
+}
+
+std::vector<std::pair<std::string, std::string>> packing_info(const Colony& c, std::uint64_t seed, double dphi,
+                                                              const std::string& provenance) {
+  return {{"tool", provenance},
+          {"seed", std::to_string(seed)},
+          {"box", io::format_number(c.parameters().box)},
+          {"cells", std::to_string(c.cells().size())},
+          {"phi", io::format_number(c.area_fraction())},
+          {"phi_J", io::format_number(c.phi_jamming())},
+          {"dphi", io::format_number(dphi)},
+          {"P0", io::format_number(c.parameters().P0)},
+          {"time", io::format_number(c.time())},
+          {"units", "sigma,k"}};
+}
+
+void run_grow(const Options& o, const std::string& provenance) {
+  std::unique_ptr<io::AtomicOutput> csv, packing, trajectory;
+  if (!o.csv_output.empty()) csv = std::make_unique<io::AtomicOutput>(o.csv_output);
+  if (!o.packing_output.empty()) packing = std::make_unique<io::AtomicOutput>(o.packing_output);
+  if (!o.trajectory_output.empty()) trajectory = std::make_unique<io::AtomicOutput>(o.trajectory_output);
+  std::unique_ptr<io::CsvWriter> table;
+  if (csv) {
+    table = std::make_unique<io::CsvWriter>(csv->stream());
+    table->meta("provenance", provenance);
+    table->meta("units", kUnits);
+    table->meta("box", io::format_number(o.growth.box));
+    table->meta("seed", std::to_string(o.common.seed));
+    table->meta("P0", io::format_number(o.growth.P0));
+    table->header(growth_columns());
+  }
+  std::unique_ptr<io::XyzWriter> frames;
+  if (trajectory) frames = std::make_unique<io::XyzWriter>(trajectory->stream());
+  Colony colony(o.growth, o.common.seed);
+  cli::ProgressBar bar("growing", 1.0, o.common.quiet);
+  const auto observe = [&](const StepRecord& r) {
+    if (table) table->row(growth_row(r));
+    if (frames && r.step % o.every == 0)
+      frames->write(packing_frame(colony.cells(), o.growth.box, r.packing,
+                                  packing_info(colony, o.common.seed, o.dphi, provenance)));
+    bar.set_note(fmt::format("{} cells, phi {:.4f}", r.packing->cells, r.packing->area_fraction));
+    bar.update(std::min(0.99, r.packing->area_fraction / (0.84 + o.dphi)));
+  };
+  colony.grow_to_jamming(observe);
+  if (o.dphi > 0) colony.grow_beyond(o.dphi, observe);
+  bar.finish();
+  const auto cells = canonical_cells(colony.cells(), o.growth.box);
+  if (packing) {
+    Domain d;
+    d.lx = d.ly = o.growth.box;
+    ContactEngine engine(d, contact_law(o.growth.contact));
+    const PackingAnalysis a = analyse_packing(cells, engine);
+    io::XyzWriter(packing->stream()).write(packing_frame(cells, o.growth.box, &a,
+                                                         packing_info(colony, o.common.seed, o.dphi, provenance)));
+    packing->commit();
+  }
+  if (trajectory) trajectory->commit();
+  if (csv) csv->commit();
+  if (!o.common.quiet)
+    std::cerr << fmt::format("jam2d: jammed at phi_J = {:.6f}; {} cells at phi = {:.6f}, t = {:.4f}/gamma0; {} steps "
+                             "accepted, {} rejected, {} FIRE iterations\n",
+                             colony.phi_jamming(), colony.cells().size(), colony.area_fraction(), colony.time(),
+                             colony.counters().accepted, colony.counters().rejected, colony.counters().iterations);
+}
+
+void run_moduli(const Options& o, const std::string& provenance) {
+  std::vector<CellPacking> packings;
+  std::vector<std::pair<std::string, int>> labels;
+  for (const auto& path : o.inputs) {
+    auto frames = read_packings(path);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      labels.emplace_back(path, static_cast<int>(f));
+      packings.push_back(std::move(frames[f]));
+    }
+  }
+  const ContactLawStyle& law = contact_law(o.contact);
+  std::vector<Moduli> results(packings.size());
+  parallel_for_each_job(static_cast<long>(packings.size()),
+                        [&](long k) { results[k] = measure_moduli(packings[k].cells, packings[k].box, law); });
+  io::AtomicOutput out(o.output);
+  io::CsvWriter table(out.stream());
+  table.meta("provenance", provenance);
+  table.meta("units", kUnits);
+  table.meta("contact", law.name);
+  std::vector<std::string> columns = {"file", "frame"};
+  for (const auto& c : packing_columns()) columns.push_back(c);
+  table.header(columns);
+  for (std::size_t k = 0; k < packings.size(); ++k) {
+    std::vector<std::string> row = {io::csv_field(labels[k].first), std::to_string(labels[k].second)};
+    for (auto& v : packing_row(results[k], packings[k].box)) row.push_back(v);
+    table.row(row);
+  }
+  out.commit();
+}
+
+void run_sweep(const Options& o, const std::vector<std::uint64_t>& seeds, const std::string& provenance) {
+  io::AtomicOutput out(o.output);
+  const long n = static_cast<long>(seeds.size());
+  std::vector<std::vector<std::vector<std::string>>> rows(static_cast<std::size_t>(n));
+  cli::ProgressBar bar("sweep", static_cast<double>(n), o.common.quiet);
+  std::atomic<long> done{0};
+  parallel_for_each_job(n, [&](long k) {
+    rows[static_cast<std::size_t>(k)] = sweep_seed(seeds[static_cast<std::size_t>(k)], o.growth, o.dphis, o.P0s);
+    bar.update(static_cast<double>(++done));
+  });
+  bar.finish();
+  io::CsvWriter table(out.stream());
+  table.meta("provenance", provenance);
+  table.meta("units", kUnits);
+  table.meta("box", io::format_number(o.growth.box));
+  table.meta("contact", o.growth.contact);
+  table.meta("adaptive_step", o.growth.adaptive_step ? "1" : "0");
+  table.meta("step_after_acceptance", o.growth.reset_step ? "reset" : "double");
+  table.header(sweep_columns());
+  for (const auto& seed_rows : rows)
+    for (const auto& r : seed_rows) table.row(r);
+  out.commit();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::run_tool("jam2d", [&] {
+    Options o;
+    cli::Tool tool("jam2d", "Budding cells in 2D: growth-driven jamming in a periodic box (thesis Ch. 3).");
+    auto* app = &tool.app();
+    app->require_subcommand(1);
+    tool.add_common(*app, o.common, cli::Tool::kQuiet);
+
+    auto* grow = app->add_subcommand("grow", "grow a colony from two cells until jammed (and beyond); CSV row per accepted step");
+    add_growth_options(tool, *grow, o);
+    tool.add_common(*grow, o.common, cli::Tool::kSeed | cli::Tool::kQuiet);
+    tool.add_double(*grow, "--dphi", o.dphi, "grow beyond jamming to phi_J + dphi", cli::non_negative());
+    grow->add_option("--P0", o.P0_text, "feedback pressure P0 [k] beyond jamming ('inf': none)");
+    grow->add_option("-o,--packing", o.packing_output, "write the final packing as extended XYZ ('-': stdout)");
+    grow->add_option("--csv", o.csv_output, "growth table, one row per accepted step ('-': stdout; '' for none)");
+    grow->add_option("--trajectory", o.trajectory_output, "write every --every-th accepted step as XYZ frames");
+    tool.add_long(*grow, "--every", o.every, "accepted steps between --trajectory frames", cli::at_least(1));
+
+    auto* moduli = app->add_subcommand("moduli", "P, B, G, Z, Z_iso, f_u and rattlers of static packings; CSV row per frame");
+    moduli->add_option("packings", o.inputs, "extended XYZ packings as jam2d writes them ('-': stdin)")->required();
+    moduli->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    moduli->add_option("--contact", o.contact, "contact law the packing was made with");
+    tool.add_common(*moduli, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+
+    auto* sweep = app->add_subcommand("sweep", "many inoculations on all cores; CSV row per seed, P0 and dphi");
+    add_growth_options(tool, *sweep, o);
+    tool.add_seed_options(*sweep, o.seeding, "colony");
+    sweep->add_option("--dphi", o.dphi_text, "dphi values: FIRST:LAST:STEP or a comma list (0: at jamming)");
+    sweep->add_option("--P0", o.P0_text, "comma list of feedback pressures [k], 'inf' for none");
+    sweep->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.add_common(*sweep, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+
+    tool.parse(argc, argv);
+    std::vector<std::uint64_t> seeds;
+    if (grow->parsed()) {
+      check_growth(tool, o);
+      tool.collect("--P0", [&] { o.growth.P0 = parse_feedback(o.P0_text); });
+      tool.check(!o.trajectory_output.empty() || o.every == 0, "--every", "needs --trajectory");
+      if (!o.trajectory_output.empty() && o.every == 0) o.every = 1;
+      const int to_stdout = (o.csv_output == "-") + (o.packing_output == "-") + (o.trajectory_output == "-");
+      tool.check(to_stdout <= 1, "", "--csv, -o and --trajectory: at most one of them may be '-' (stdout)");
+    }
+    if (moduli->parsed()) tool.collect("--contact", [&] { contact_law(o.contact); });
+    if (sweep->parsed()) {
+      check_growth(tool, o);
+      tool.collect("--P0", [&] { o.P0s = parse_feedback_list(o.P0_text); });
+      tool.collect("--dphi", [&] { o.dphis = parse_dphi_list(o.dphi_text); });
+      seeds = tool.seed_list(o.seeding);
+      tool.check(!o.seeding.resume, "--resume", "sweep writes one table; run the missing seeds and join the tables");
+    }
+    tool.finish_checks();
+    cli::apply_threads(o.common);
+    const std::string provenance = cli::provenance("jam2d", argc, argv);
+    if (grow->parsed()) run_grow(o, provenance);
+    if (moduli->parsed()) run_moduli(o, provenance);
+    if (sweep->parsed()) run_sweep(o, seeds, provenance);
+    return 0;
+  });
+}
