@@ -78,10 +78,14 @@ FlowImage read_vtk_image(const std::string& path) {
     return from_vtk(io::read_vtk<std::uint8_t>(input), path, 0);
   }
   const auto info = io::read_vtk_info(path);
-  if (info.type == "unsigned_char") return from_vtk(io::read_vtk<std::uint8_t>(path), path, info.data_line);
-  if (info.type == "int") return from_vtk(io::read_vtk<std::int32_t>(path), path, info.data_line);
-  if (info.type == "float") return from_vtk(io::read_vtk<float>(path), path, info.data_line);
-  if (info.type == "double") return from_vtk(io::read_vtk<double>(path), path, info.data_line);
+  const auto titled = [&](FlowImage f) {
+    f.title = info.title;
+    return f;
+  };
+  if (info.type == "unsigned_char") return titled(from_vtk(io::read_vtk<std::uint8_t>(path), path, info.data_line));
+  if (info.type == "int") return titled(from_vtk(io::read_vtk<std::int32_t>(path), path, info.data_line));
+  if (info.type == "float") return titled(from_vtk(io::read_vtk<float>(path), path, info.data_line));
+  if (info.type == "double") return titled(from_vtk(io::read_vtk<double>(path), path, info.data_line));
   throw InputError(path, info.scalars_line,
                    fmt::format("scalar type '{}' is not supported: expected unsigned_char, int, float or double",
                                info.type));
