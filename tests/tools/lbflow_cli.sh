@@ -9,6 +9,8 @@ percolate="$bin/percolate"
 kcfit="$bin/kcfit"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=lbflow
+# Tiny lattices: one thread is fastest on a loaded machine (same_bytes_any_thread_count asks for 1 and 2).
+export OMP_NUM_THREADS=1
 enter_scratch_dir
 # field CSV COLUMN [ROW]: the value of COLUMN in data row ROW (default 1).
 field() {
