@@ -1,6 +1,7 @@
 #include "lbm/flow_solver.hpp"
 
 #include "lbm/d3q19.hpp"
+#include "lbm/layout.hpp"
 #include "lbm/sweep_kernel.hpp"
 
 #include "core/errors.hpp"
@@ -19,7 +20,6 @@ namespace cmp::lbm {
 
 namespace {
 
-constexpr int kBatch = kernel::kBatch;
 constexpr char kMagic[8] = {'C', 'M', 'P', 'L', 'B', 'M', '1', '\n'};
 
 // 64-bit FNV-1a.
@@ -82,9 +82,8 @@ struct FlowSolver::Impl {
   // Slot holding the population arriving at `node` along q for the next step, after a step of
   // parity `after_odd` (AA pattern: the slot moves with the parity).
   std::size_t incoming_slot(int q, long node, bool after_odd) const {
-    if (q == 0) return static_cast<std::size_t>(node);
-    return after_odd ? static_cast<std::size_t>(q * stride + node)
-                     : links[static_cast<std::size_t>((opposite(q) - 1) * stride + node)];
+    if (q == 0) return pop_slot(0, node);
+    return after_odd ? pop_slot(q, node) : links[link_index(opposite(q), node)];
   }
   template <class Real>
   void pressure_node(std::vector<Real>& F, const PressureNode& p, bool after_odd) const;
@@ -105,7 +104,7 @@ void FlowSolver::Impl::step_once() {
   const bool odd = (steps & 1) != 0;
   const double* g = settings.driving == Driving::kBodyForce ? force : nullptr;
   for_each_chunk(chunks, [&](int c) {
-    SweepRange<Real> r{F.data(), links.data(), stride, chunk_start(c), chunk_start(c + 1), odd, g};
+    SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g};
     op->sweep(r);
   });
   // Boundary passes: each touches only its own slots, in a fixed order (tiny next to the sweep).
@@ -155,12 +154,7 @@ void FlowSolver::Impl::pressure_node(std::vector<Real>& F, const PressureNode& p
 // Pre-collision populations of a node at the current step count.
 template <class Real>
 void FlowSolver::Impl::gather(const std::vector<Real>& F, long node, double f[kQ]) const {
-  f[0] = F[static_cast<std::size_t>(node)];
-  if ((steps & 1) == 0) {
-    for (int q = 1; q < kQ; ++q) f[q] = F[static_cast<std::size_t>(q * stride + node)];
-  } else {
-    for (int q = 1; q < kQ; ++q) f[q] = F[links[static_cast<std::size_t>((opposite(q) - 1) * stride + node)]];
-  }
+  for (int q = 0; q < kQ; ++q) f[q] = F[incoming_slot(q, node, (steps & 1) == 0)];
 }
 
 template <class Real>
@@ -265,7 +259,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   // Link table and boundary lists.
   const long N = m.stride;
   m.links.resize(static_cast<std::size_t>(18 * N));
-  auto slot = [N](int q, long node) { return static_cast<std::uint32_t>(q * N + node); };
+  auto slot = [](int q, long node) { return static_cast<std::uint32_t>(pop_slot(q, node)); };
   const double rho_in = 1 + 0.5 * settings.density_drop, rho_out = 1 - 0.5 * settings.density_drop;
   struct Pending {
     long node;
@@ -275,7 +269,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   std::vector<Pending> pending;
   for (long i = 0; i < N; ++i) {
     if (i >= m.fluid) {  // padding: an isolated node that bounces everything back
-      for (int q = 1; q < kQ; ++q) m.links[static_cast<std::size_t>((q - 1) * N + i)] = slot(opposite(q), i);
+      for (int q = 1; q < kQ; ++q) m.links[link_index(q, i)] = slot(opposite(q), i);
       continue;
     }
     const long g = m.site[static_cast<std::size_t>(i)];
@@ -291,7 +285,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
         if (pressure && d == a && (t[d] < 0 || t[d] >= m.n[d])) outside = true;
         t[d] = (t[d] % m.n[d] + m.n[d]) % m.n[d];
       }
-      std::uint32_t& link = m.links[static_cast<std::size_t>((q - 1) * N + i)];
+      std::uint32_t& link = m.links[link_index(q, i)];
       if (outside) {  // bounced back, then replaced by the pressure node pass
         link = slot(opposite(q), i);
         continue;
@@ -314,9 +308,9 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   // Interpolated links need the fluid node behind: y = x - c_q, inside the box.
   for (const Pending& p : pending) {
     const int q = p.q, o = opposite(q);
-    const std::uint32_t back = m.links[static_cast<std::size_t>((o - 1) * N + p.node)];
+    const std::uint32_t back = m.links[link_index(o, p.node)];
     if (back == slot(q, p.node)) continue;  // no fluid node behind (wall or open face): plain bounce-back
-    const long y = static_cast<long>(back) - o * N;  // back = slot(o, y)
+    const long y = slot_node(back);  // back = slot(o, y)
     WallLink w{};
     w.target = slot(o, p.node);
     if (p.fraction < 0.5) {
@@ -329,7 +323,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
       // f_o(x) = f*_q(x) / (2 fr) + (2 fr - 1)/(2 fr) f*_o(x): f*_o(x) is what arrives at y along o.
       w.k_self = 1 / (2 * p.fraction);
       w.k_other = (2 * p.fraction - 1) / (2 * p.fraction);
-      w.source[0] = m.links[static_cast<std::size_t>((q - 1) * N + y)];  // = slot(q, x)
+      w.source[0] = m.links[link_index(q, y)];  // = slot(q, x)
       w.source[1] = slot(o, y);
     }
     m.walls.push_back(w);
@@ -346,7 +340,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
                             static_cast<int>(g / m.n[0] / m.n[1])};
         rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
       }
-      for (int q = 0; q < kQ; ++q) F[static_cast<std::size_t>(q * N + i)] = static_cast<std::remove_reference_t<decltype(F[0])>>(weight(q) * rho);
+      for (int q = 0; q < kQ; ++q) F[pop_slot(q, i)] = static_cast<std::remove_reference_t<decltype(F[0])>>(weight(q) * rho);
     }
   };
   if (settings.precision == Precision::kFloat) init(m.ff);

@@ -12,12 +12,11 @@
 // divisions anywhere: the AA parity and the forcing are template parameters.
 #include "lbm/collision.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/layout.hpp"
 
 #include <cstdint>
 
 namespace cmp::lbm::kernel {
-
-inline constexpr int kBatch = 8;
 
 // Equilibrium, Guo forcing and relaxation of one node in place: f -> post-collision. Every
 // loop over directions is unrolled, so the velocities and weights are constants.
@@ -85,25 +84,26 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   constexpr int B = kBatch;
   Real* __restrict F = r.f;
   const std::uint32_t* __restrict L = r.links;
-  const long N = r.stride;
   for (long base = r.begin; base < r.end; base += B) {
+    Real* __restrict own = F + kQ * base;                     // this block's populations
+    const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
     double f[kQ][B];
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[q * N + base + b];
+        for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
     } else {
-      for (int b = 0; b < B; ++b) f[0][b] = F[base + b];
+      for (int b = 0; b < B; ++b) f[0][b] = own[b];
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[L[(opposite(q) - 1) * N + base + b]];
+        for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
     }
     collide_batch<B, kForce>(f, r.force, relax);
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[opposite(q) * N + base + b] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = static_cast<Real>(f[q][b]);
     } else {
-      for (int b = 0; b < B; ++b) F[base + b] = static_cast<Real>(f[0][b]);
+      for (int b = 0; b < B; ++b) own[b] = static_cast<Real>(f[0][b]);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[L[(q - 1) * N + base + b]] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = static_cast<Real>(f[q][b]);
     }
   }
 }
