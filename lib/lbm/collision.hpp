@@ -28,9 +28,8 @@ struct CollisionParameters {
 // One contiguous range of nodes swept by one fused stream-collide step (lbm/flow_solver.cpp).
 template <class Real>
 struct SweepRange {
-  Real* f;                          // populations, slot (q, node) at q * stride + node
-  const std::uint32_t* links;       // 18 * stride slot indices, (q - 1) * stride + node (FlowSolver)
-  long stride;                      // nodes incl. padding
+  Real* f;                          // populations, laid out as lbm/layout.hpp says
+  const std::uint32_t* links;       // the link table (slot indices into f), lbm/layout.hpp
   long begin, end;                  // node range, multiples of the kernel's batch size
   bool odd;                         // AA-pattern parity of this step
   const double* force;              // body force (3 values) or nullptr

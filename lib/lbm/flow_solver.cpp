@@ -1,6 +1,7 @@
 #include "lbm/flow_solver.hpp"
 
 #include "lbm/d3q19.hpp"
+#include "lbm/layout.hpp"
 #include "lbm/sweep_kernel.hpp"
 
 #include "core/errors.hpp"
@@ -19,7 +20,6 @@ namespace cmp::lbm {
 
 namespace {
 
-constexpr int kBatch = kernel::kBatch;
 constexpr char kMagic[8] = {'C', 'M', 'P', 'L', 'B', 'M', '1', '\n'};
 
 // 64-bit FNV-1a.
@@ -46,10 +46,11 @@ struct WallLink {
   double k_self, k_other;
 };
 
-// Anti-bounce-back link at the inlet/outlet: F[slot] = -F[slot] + value, after each step.
-struct OpenLink {
-  std::uint32_t slot;
-  double value;
+// A fluid node on the inlet or outlet plane (Zou-He pressure node).
+struct PressureNode {
+  long node;
+  int sign;    // +1: inlet (the inward normal is +axis), -1: outlet
+  double rho;  // imposed density
 };
 
 }  // namespace
@@ -62,7 +63,7 @@ struct FlowSolver::Impl {
   std::vector<std::uint32_t> links;    // 18 * stride
   std::vector<double> fd;              // populations (double storage)
   std::vector<float> ff;               // populations (float storage)
-  std::vector<OpenLink> open;
+  std::vector<PressureNode> open;
   std::vector<WallLink> walls;
   long wall_links = 0;
   std::unique_ptr<CollisionOperator> op;
@@ -78,6 +79,14 @@ struct FlowSolver::Impl {
 
   template <class Real>
   void step_once();
+  // Slot holding the population arriving at `node` along q for the next step, after a step of
+  // parity `after_odd` (AA pattern: the slot moves with the parity).
+  std::size_t incoming_slot(int q, long node, bool after_odd) const {
+    if (q == 0) return pop_slot(0, node);
+    return after_odd ? pop_slot(q, node) : links[link_index(opposite(q), node)];
+  }
+  template <class Real>
+  void pressure_node(std::vector<Real>& F, const PressureNode& p, bool after_odd) const;
   template <class Real>
   void gather(const std::vector<Real>& F, long node, double f[kQ]) const;
   template <class Real>
@@ -95,11 +104,11 @@ void FlowSolver::Impl::step_once() {
   const bool odd = (steps & 1) != 0;
   const double* g = settings.driving == Driving::kBodyForce ? force : nullptr;
   for_each_chunk(chunks, [&](int c) {
-    SweepRange<Real> r{F.data(), links.data(), stride, chunk_start(c), chunk_start(c + 1), odd, g};
+    SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g};
     op->sweep(r);
   });
   // Boundary passes: each touches only its own slots, in a fixed order (tiny next to the sweep).
-  for (const OpenLink& o : open) F[o.slot] = static_cast<Real>(o.value - static_cast<double>(F[o.slot]));
+  for (const PressureNode& p : open) pressure_node(F, p, odd);
   const int parity = odd ? 1 : 0;
   for (const WallLink& w : walls)
     F[w.target] = static_cast<Real>(w.k_self * static_cast<double>(F[w.target]) +
@@ -107,15 +116,45 @@ void FlowSolver::Impl::step_once() {
   ++steps;
 }
 
+// Zou & He (1997) pressure node, in the D3Q19 form of Hecht & Harting (2010): from the
+// imposed density and the known populations (those not arriving from outside the box),
+// the normal momentum j_n = rho_b - (sum_{c.n=0} f + 2 sum_{c.n=-1} f); each unknown
+// population (c.n = +1) is its opposite plus the equilibrium difference, j_n/3 (face) or
+// j_n/6 (edge), minus the transverse correction c_t N_t, N_t = 1/2 sum_{c.n=0} f c_t, that
+// zeroes the tangential momentum (the pressure planes carry no tangential velocity).
+template <class Real>
+void FlowSolver::Impl::pressure_node(std::vector<Real>& F, const PressureNode& p, bool after_odd) const {
+  const int a = settings.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+  double f[kQ];
+  std::size_t slots[kQ];
+  for (int q = 0; q < kQ; ++q) {
+    slots[q] = incoming_slot(q, p.node, after_odd);
+    f[q] = static_cast<double>(F[slots[q]]);
+  }
+  double level = 0, out = 0, nb = 0, nc = 0;
+  for (int q = 0; q < kQ; ++q) {
+    const int cn = velocity(q, a) * p.sign;
+    if (cn == 0) {
+      level += f[q];
+      nb += 0.5 * velocity(q, b) * f[q];
+      nc += 0.5 * velocity(q, c) * f[q];
+    } else if (cn < 0) {
+      out += f[q];
+    }
+  }
+  const double jn = p.rho - (level + 2 * out);
+  for (int q = 1; q < kQ; ++q) {
+    if (velocity(q, a) * p.sign != 1) continue;
+    const int cb = velocity(q, b), cc = velocity(q, c);
+    const double v = cb == 0 && cc == 0 ? f[opposite(q)] + jn / 3 : f[opposite(q)] + jn / 6 - cb * nb - cc * nc;
+    F[slots[q]] = static_cast<Real>(v);
+  }
+}
+
 // Pre-collision populations of a node at the current step count.
 template <class Real>
 void FlowSolver::Impl::gather(const std::vector<Real>& F, long node, double f[kQ]) const {
-  f[0] = F[static_cast<std::size_t>(node)];
-  if ((steps & 1) == 0) {
-    for (int q = 1; q < kQ; ++q) f[q] = F[static_cast<std::size_t>(q * stride + node)];
-  } else {
-    for (int q = 1; q < kQ; ++q) f[q] = F[links[static_cast<std::size_t>((opposite(q) - 1) * stride + node)]];
-  }
+  for (int q = 0; q < kQ; ++q) f[q] = F[incoming_slot(q, node, (steps & 1) == 0)];
 }
 
 template <class Real>
@@ -192,7 +231,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   if (!pressure && settings.body_force == 0) throw UsageError("body force must be non-zero");
   const double tau = settings.collision_parameters.tau;
   m.nu = (tau - 0.5) * kCs2;
-  m.grad_p = pressure ? kCs2 * settings.density_drop / m.n[a] : settings.body_force;
+  m.grad_p = pressure ? kCs2 * settings.density_drop / (m.n[a] - 1) : settings.body_force;
   if (!pressure) m.force[a] = settings.body_force;
 
   // Number the fluid nodes slab by slab along the axis (axis coordinate slowest).
@@ -220,7 +259,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   // Link table and boundary lists.
   const long N = m.stride;
   m.links.resize(static_cast<std::size_t>(18 * N));
-  auto slot = [N](int q, long node) { return static_cast<std::uint32_t>(q * N + node); };
+  auto slot = [](int q, long node) { return static_cast<std::uint32_t>(pop_slot(q, node)); };
   const double rho_in = 1 + 0.5 * settings.density_drop, rho_out = 1 - 0.5 * settings.density_drop;
   struct Pending {
     long node;
@@ -230,13 +269,15 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   std::vector<Pending> pending;
   for (long i = 0; i < N; ++i) {
     if (i >= m.fluid) {  // padding: an isolated node that bounces everything back
-      for (int q = 1; q < kQ; ++q) m.links[static_cast<std::size_t>((q - 1) * N + i)] = slot(opposite(q), i);
+      for (int q = 1; q < kQ; ++q) m.links[link_index(q, i)] = slot(opposite(q), i);
       continue;
     }
     const long g = m.site[static_cast<std::size_t>(i)];
     const int x = static_cast<int>(g % m.n[0]), y = static_cast<int>(g / m.n[0] % m.n[1]),
               z = static_cast<int>(g / m.n[0] / m.n[1]);
     const int xyz[3] = {x, y, z};
+    if (pressure && (xyz[a] == 0 || xyz[a] == m.n[a] - 1))
+      m.open.push_back({i, xyz[a] == 0 ? 1 : -1, xyz[a] == 0 ? rho_in : rho_out});
     for (int q = 1; q < kQ; ++q) {
       int t[3] = {x + kCx[q], y + kCy[q], z + kCz[q]};
       bool outside = false;
@@ -244,14 +285,9 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
         if (pressure && d == a && (t[d] < 0 || t[d] >= m.n[d])) outside = true;
         t[d] = (t[d] % m.n[d] + m.n[d]) % m.n[d];
       }
-      std::uint32_t& link = m.links[static_cast<std::size_t>((q - 1) * N + i)];
-      if (outside) {
+      std::uint32_t& link = m.links[link_index(q, i)];
+      if (outside) {  // bounced back, then replaced by the pressure node pass
         link = slot(opposite(q), i);
-        // The population leaving along q comes back along opposite(q): anti-bounce-back at
-        // the face it crossed (rho_in behind the first plane, rho_out beyond the last).
-        const double rho_b = velocity(q, a) < 0 ? rho_in : rho_out;
-        m.open.push_back({slot(opposite(q), i), 2 * weight(q) * rho_b});
-        (void)xyz;
         continue;
       }
       const long j = node_of[static_cast<std::size_t>(lattice.index(t[0], t[1], t[2]))];
@@ -272,9 +308,9 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   // Interpolated links need the fluid node behind: y = x - c_q, inside the box.
   for (const Pending& p : pending) {
     const int q = p.q, o = opposite(q);
-    const std::uint32_t back = m.links[static_cast<std::size_t>((o - 1) * N + p.node)];
+    const std::uint32_t back = m.links[link_index(o, p.node)];
     if (back == slot(q, p.node)) continue;  // no fluid node behind (wall or open face): plain bounce-back
-    const long y = static_cast<long>(back) - o * N;  // back = slot(o, y)
+    const long y = slot_node(back);  // back = slot(o, y)
     WallLink w{};
     w.target = slot(o, p.node);
     if (p.fraction < 0.5) {
@@ -287,7 +323,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
       // f_o(x) = f*_q(x) / (2 fr) + (2 fr - 1)/(2 fr) f*_o(x): f*_o(x) is what arrives at y along o.
       w.k_self = 1 / (2 * p.fraction);
       w.k_other = (2 * p.fraction - 1) / (2 * p.fraction);
-      w.source[0] = m.links[static_cast<std::size_t>((q - 1) * N + y)];  // = slot(q, x)
+      w.source[0] = m.links[link_index(q, y)];  // = slot(q, x)
       w.source[1] = slot(o, y);
     }
     m.walls.push_back(w);
@@ -302,9 +338,9 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
         const long g = m.site[static_cast<std::size_t>(i)];
         const int xyz[3] = {static_cast<int>(g % m.n[0]), static_cast<int>(g / m.n[0] % m.n[1]),
                             static_cast<int>(g / m.n[0] / m.n[1])};
-        rho = rho_in - settings.density_drop * (xyz[a] + 0.5) / m.n[a];
+        rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
       }
-      for (int q = 0; q < kQ; ++q) F[static_cast<std::size_t>(q * N + i)] = static_cast<std::remove_reference_t<decltype(F[0])>>(weight(q) * rho);
+      for (int q = 0; q < kQ; ++q) F[pop_slot(q, i)] = static_cast<std::remove_reference_t<decltype(F[0])>>(weight(q) * rho);
     }
   };
   if (settings.precision == Precision::kFloat) init(m.ff);
@@ -356,7 +392,7 @@ double FlowSolver::bytes_per_fluid_node() const {
   const Impl& m = *impl_;
   const double pop = m.settings.precision == Precision::kFloat ? sizeof(float) : sizeof(double);
   const double total = static_cast<double>(m.stride) * (kQ * pop + 18 * sizeof(std::uint32_t)) +
-                       m.site.size() * sizeof(long) + m.open.size() * sizeof(OpenLink) + m.walls.size() * sizeof(WallLink);
+                       m.site.size() * sizeof(long) + m.open.size() * sizeof(PressureNode) + m.walls.size() * sizeof(WallLink);
   return total / static_cast<double>(m.fluid);
 }
 

@@ -61,44 +61,49 @@ struct MrtRelax {
   double even_coef[4];  // 2 (s_k - s_nu) / |M_k|^2: the 2 counts both members of a pair in M_k.g
   double odd_coef[3];   // 2 (s_m - s_q) / |M_k|^2
 
-  template <int B>
-  [[gnu::always_inline]] void operator()(double (&g)[kQ][B]) const {
-    double ev[kPairs + 1][B], od[kPairs + 1][B];
-    for (int b = 0; b < B; ++b) ev[0][b] = g[0][b];
-    for (int p = 1; p <= kPairs; ++p)
-      for (int b = 0; b < B; ++b) {
-        ev[p][b] = 0.5 * (g[p][b] + g[p + kPairs][b]);
-        od[p][b] = 0.5 * (g[p][b] - g[p + kPairs][b]);
-      }
-    double oute[kPairs + 1][B], outo[kPairs + 1][B];
-    for (int q = 0; q <= kPairs; ++q)
-      for (int b = 0; b < B; ++b) oute[q][b] = s_nu * ev[q][b];
-    for (int p = 1; p <= kPairs; ++p)
-      for (int b = 0; b < B; ++b) outo[p][b] = s_q * od[p][b];
+  [[gnu::always_inline]] void operator()(double (&g)[kQ]) const {
+    double ev[kPairs + 1], od[kPairs + 1];
+    ev[0] = g[0];
+    od[0] = 0;
+#pragma GCC unroll 9
+    for (int p = 1; p <= kPairs; ++p) {
+      ev[p] = 0.5 * (g[p] + g[p + kPairs]);
+      od[p] = 0.5 * (g[p] - g[p + kPairs]);
+    }
+    double oute[kPairs + 1], outo[kPairs + 1];
+#pragma GCC unroll 10
+    for (int q = 0; q <= kPairs; ++q) {
+      oute[q] = s_nu * ev[q];
+      outo[q] = s_q * od[q];
+    }
+#pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
-      double m[B];
-      for (int b = 0; b < B; ++b) m[b] = 0.5 * kRows.even[k][0] * ev[0][b];
+      double m = 0.5 * kRows.even[k][0] * ev[0];
+#pragma GCC unroll 9
       for (int p = 1; p <= kPairs; ++p)
-        for (int b = 0; b < B; ++b) m[b] += kRows.even[k][p] * ev[p][b];
-      for (int b = 0; b < B; ++b) m[b] *= even_coef[k];
+        if (kRows.even[k][p] != 0) m += kRows.even[k][p] * ev[p];
+      m *= even_coef[k];
+#pragma GCC unroll 10
       for (int q = 0; q <= kPairs; ++q)
-        for (int b = 0; b < B; ++b) oute[q][b] += kRows.even[k][q] * m[b];
+        if (kRows.even[k][q] != 0) oute[q] += kRows.even[k][q] * m;
     }
+#pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
-      double m[B];
-      for (int b = 0; b < B; ++b) m[b] = 0;
+      double m = 0;
+#pragma GCC unroll 9
       for (int p = 1; p <= kPairs; ++p)
-        for (int b = 0; b < B; ++b) m[b] += kRows.odd[k][p] * od[p][b];
-      for (int b = 0; b < B; ++b) m[b] *= odd_coef[k];
+        if (kRows.odd[k][p] != 0) m += kRows.odd[k][p] * od[p];
+      m *= odd_coef[k];
+#pragma GCC unroll 9
       for (int p = 1; p <= kPairs; ++p)
-        for (int b = 0; b < B; ++b) outo[p][b] += kRows.odd[k][p] * m[b];
+        if (kRows.odd[k][p] != 0) outo[p] += kRows.odd[k][p] * m;
     }
-    for (int b = 0; b < B; ++b) g[0][b] = oute[0][b];
-    for (int p = 1; p <= kPairs; ++p)
-      for (int b = 0; b < B; ++b) {
-        g[p][b] = oute[p][b] + outo[p][b];
-        g[p + kPairs][b] = oute[p][b] - outo[p][b];
-      }
+    g[0] = oute[0];
+#pragma GCC unroll 9
+    for (int p = 1; p <= kPairs; ++p) {
+      g[p] = oute[p] + outo[p];
+      g[p + kPairs] = oute[p] - outo[p];
+    }
   }
 };
 

@@ -3,70 +3,79 @@
 // instantiates it with its own relaxation functor, so the relaxation is inlined into the loop
 // and the only virtual call is one per node range.
 //
-// A relaxation functor R has `template <int B> void operator()(double (&g)[kQ][B]) const`,
-// replacing the non-equilibrium parts g of B nodes by R g (linear, see lbm/collision.hpp).
+// A relaxation functor R has `void operator()(double (&g)[kQ]) const`, replacing the
+// non-equilibrium part g of one node by R g (linear, see lbm/collision.hpp); the batch loop
+// around it is vectorised (omp simd), so R must be straight-line code.
 //
 // Nodes go in batches of kBatch: gather 19 populations per node into a local array, collide
 // there (vectorised across the batch), scatter back. No branches inside a batch and no
 // divisions anywhere: the AA parity and the forcing are template parameters.
 #include "lbm/collision.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/layout.hpp"
 
 #include <cstdint>
 
 namespace cmp::lbm::kernel {
 
-inline constexpr int kBatch = 8;
+// Equilibrium, Guo forcing and relaxation of one node in place: f -> post-collision. Every
+// loop over directions is unrolled, so the velocities and weights are constants.
+template <bool kForce, class Relax>
+[[gnu::always_inline]] inline void collide_node(double (&f)[kQ], double gx, double gy, double gz, const Relax& relax) {
+  double rho = 0, ux = 0, uy = 0, uz = 0;
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    rho += f[q];
+    if (kCx[q] != 0) ux += kCx[q] * f[q];
+    if (kCy[q] != 0) uy += kCy[q] * f[q];
+    if (kCz[q] != 0) uz += kCz[q] * f[q];
+  }
+  if constexpr (kForce) {
+    ux += 0.5 * gx;
+    uy += 0.5 * gy;
+    uz += 0.5 * gz;
+  }
+  const double uu = ux * ux + uy * uy + uz * uz;
+  double g[kQ], s[kQ];
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    const double w = weight(q);
+    const double cu = kCx[q] * ux + kCy[q] * uy + kCz[q] * uz;
+    const double feq = w * (rho + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
+    g[q] = f[q] - feq;
+    if constexpr (kForce) {
+      const double cg = kCx[q] * gx + kCy[q] * gy + kCz[q] * gz;
+      const double ug = ux * gx + uy * gy + uz * gz;
+      s[q] = w * (3.0 * cg + 9.0 * cu * cg - 3.0 * ug);
+      g[q] += 0.5 * s[q];
+    }
+  }
+  relax(g);
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    f[q] -= g[q];
+    if constexpr (kForce) f[q] += s[q];
+  }
+}
 
-// Equilibrium, Guo forcing and relaxation of B nodes in place: f[q][b] -> post-collision.
-// force: 3 components (kForce) or unused.
+// The same on a batch f[q][b], vectorised across the batch.
 template <int B, bool kForce, class Relax>
 [[gnu::always_inline]] inline void collide_batch(double (&f)[kQ][B], const double* force, const Relax& relax) {
-  double rho[B], ux[B], uy[B], uz[B];
-  for (int b = 0; b < B; ++b) {
-    double r = 0, x = 0, y = 0, z = 0;
-    for (int q = 0; q < kQ; ++q) {
-      r += f[q][b];
-      x += kCx[q] * f[q][b];
-      y += kCy[q] * f[q][b];
-      z += kCz[q] * f[q][b];
-    }
-    rho[b] = r;
-    ux[b] = x;
-    uy[b] = y;
-    uz[b] = z;
-  }
   double gx = 0, gy = 0, gz = 0;
   if constexpr (kForce) {
     gx = force[0];
     gy = force[1];
     gz = force[2];
-    for (int b = 0; b < B; ++b) {
-      ux[b] += 0.5 * gx;
-      uy[b] += 0.5 * gy;
-      uz[b] += 0.5 * gz;
-    }
   }
-  double g[kQ][B];
-  for (int q = 0; q < kQ; ++q) {
-    const double w = weight(q);
-    for (int b = 0; b < B; ++b) {
-      const double cu = kCx[q] * ux[b] + kCy[q] * uy[b] + kCz[q] * uz[b];
-      const double uu = ux[b] * ux[b] + uy[b] * uy[b] + uz[b] * uz[b];
-      const double feq = w * (rho[b] + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
-      g[q][b] = f[q][b] - feq;
-      if constexpr (kForce) {
-        const double cg = kCx[q] * gx + kCy[q] * gy + kCz[q] * gz;
-        const double ug = ux[b] * gx + uy[b] * gy + uz[b] * gz;
-        const double s = w * (3.0 * cg + 9.0 * cu * cg - 3.0 * ug);
-        g[q][b] += 0.5 * s;
-        f[q][b] += s;
-      }
-    }
+#pragma omp simd
+  for (int b = 0; b < B; ++b) {
+    double node[kQ];
+#pragma GCC unroll 19
+    for (int q = 0; q < kQ; ++q) node[q] = f[q][b];
+    collide_node<kForce>(node, gx, gy, gz, relax);
+#pragma GCC unroll 19
+    for (int q = 0; q < kQ; ++q) f[q][b] = node[q];
   }
-  relax(g);
-  for (int q = 0; q < kQ; ++q)
-    for (int b = 0; b < B; ++b) f[q][b] -= g[q][b];
 }
 
 // One AA step over [r.begin, r.end).
@@ -75,25 +84,26 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   constexpr int B = kBatch;
   Real* __restrict F = r.f;
   const std::uint32_t* __restrict L = r.links;
-  const long N = r.stride;
   for (long base = r.begin; base < r.end; base += B) {
+    Real* __restrict own = F + kQ * base;                     // this block's populations
+    const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
     double f[kQ][B];
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[q * N + base + b];
+        for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
     } else {
-      for (int b = 0; b < B; ++b) f[0][b] = F[base + b];
+      for (int b = 0; b < B; ++b) f[0][b] = own[b];
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[L[(opposite(q) - 1) * N + base + b]];
+        for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
     }
     collide_batch<B, kForce>(f, r.force, relax);
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[opposite(q) * N + base + b] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = static_cast<Real>(f[q][b]);
     } else {
-      for (int b = 0; b < B; ++b) F[base + b] = static_cast<Real>(f[0][b]);
+      for (int b = 0; b < B; ++b) own[b] = static_cast<Real>(f[0][b]);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[L[(q - 1) * N + base + b]] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = static_cast<Real>(f[q][b]);
     }
   }
 }
@@ -122,10 +132,10 @@ inline void collide_one(double f[kQ], const double* force, const Relax& relax) {
 
 template <class Relax>
 inline void relax_one(double g[kQ], const Relax& relax) {
-  double batch[kQ][1];
-  for (int q = 0; q < kQ; ++q) batch[q][0] = g[q];
-  relax(batch);
-  for (int q = 0; q < kQ; ++q) g[q] = batch[q][0];
+  double node[kQ];
+  for (int q = 0; q < kQ; ++q) node[q] = g[q];
+  relax(node);
+  for (int q = 0; q < kQ; ++q) g[q] = node[q];
 }
 
 // A CollisionOperator from a relaxation functor; the style files define

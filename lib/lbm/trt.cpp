@@ -11,16 +11,15 @@ namespace {
 
 struct TrtRelax {
   double plus, minus;  // s+, s-
-  template <int B>
-  [[gnu::always_inline]] void operator()(double (&g)[kQ][B]) const {
+  [[gnu::always_inline]] void operator()(double (&g)[kQ]) const {
     const double hp = 0.5 * plus, hm = 0.5 * minus;
-    for (int b = 0; b < B; ++b) g[0][b] *= plus;
-    for (int p = 1; p <= kPairs; ++p)
-      for (int b = 0; b < B; ++b) {
-        const double s = g[p][b] + g[p + kPairs][b], d = g[p][b] - g[p + kPairs][b];
-        g[p][b] = hp * s + hm * d;
-        g[p + kPairs][b] = hp * s - hm * d;
-      }
+    g[0] *= plus;
+#pragma GCC unroll 9
+    for (int p = 1; p <= kPairs; ++p) {
+      const double s = g[p] + g[p + kPairs], d = g[p] - g[p + kPairs];
+      g[p] = hp * s + hm * d;
+      g[p + kPairs] = hp * s - hm * d;
+    }
   }
 };
 
