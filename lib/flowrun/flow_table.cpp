@@ -75,8 +75,8 @@ void write_flow_meta(io::CsvWriter& csv, const std::string& provenance, const lb
   csv.meta("window", std::to_string(conv.window));
   csv.meta("max_steps", std::to_string(conv.max_steps));
   csv.meta("permeability", "nu <u_axis> / |grad p| with <u_axis> the superficial mean over the whole box "
-                           "(solid nodes count as 0), |grad p| = c_s^2 density_drop / n_axis (pressure planes half a "
-                           "node outside the box) or the body force");
+                           "(solid nodes count as 0); |grad p| (pressure_gradient_lu) = c_s^2 density_drop / (n_axis - 1) "
+                           "with the densities set on the first and last node planes, or the body force");
   csv.meta("units", "_lu lattice units (node side delta/M, time step); permeability_delta2 in voxel sides delta^2 "
                     "of the input image; permeability_d02 in D0^2; permeability_u2 in the input file's length unit "
                     "squared; tortuosity tau_H = sum|u| / sum u_axis over the fluid nodes");
