@@ -58,7 +58,7 @@ void declare(cli::Tool& tool, Options& o) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_option("inputs", o.inputs,
                  "pore images: binary VTK STRUCTURED_POINTS (percolate -o; non-zero = fluid), raw bytes with --dims, "
-                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads stdin")
+                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads a VTK image or raw bytes from stdin")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--dims", o.dims, "the inputs are raw bytes (x fastest, non-zero = fluid) of NXxNYxNZ voxels");
   tool.add_int(app, "-M,--refine", o.refine, "lattice refinement M: each voxel becomes M^3 nodes (thesis: 3)",
