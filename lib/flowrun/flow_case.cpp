@@ -4,6 +4,7 @@
 #include "flowrun/flow_vtk.hpp"
 #include "flowrun/pore_cluster.hpp"
 #include "flowrun/refine.hpp"
+#include "io/input.hpp"
 #include "lbm/sphere_lattice.hpp"
 #include "voxel/grid.hpp"
 #include "voxel/packing.hpp"
@@ -109,6 +110,26 @@ FlowCase sphere_case(const voxel::Packing& p, double delta, int M, int axis, boo
   c.lattice.fluid = std::move(pc.fluid);
   c.interpolated_walls = true;
   return c;
+}
+
+FlowCase read_flow_case(const std::string& path, const InputOptions& o) {
+  if (!o.dims.empty()) return image_case(read_raw_image(path, parse_dims(o.dims)), o.refine, o.axis, o.periodic_axis);
+  std::optional<io::InputFormat> format;
+  if (path != "-") {
+    io::Input probe(path);
+    format = probe.format();
+  }
+  if (path == "-" || format == io::InputFormat::vtk)
+    return image_case(read_vtk_image(path), o.refine, o.axis, o.periodic_axis);
+  if (format == io::InputFormat::xyz) {
+    if (!(o.delta > 0))
+      throw UsageError(path + ": a sphere packing needs --delta (the voxel side in D0; the node side is delta/M)");
+    auto packings = voxel::read_packings(path, {o.scale, o.d0});
+    if (packings.size() != 1) throw InputError(path, 0, "holds several frames: give lbflow one packing per file");
+    return sphere_case(packings.front(), o.delta, o.refine, o.axis, o.periodic_axis);
+  }
+  io::Input input(path);
+  input.fail_format("a VTK image (STRUCTURED_POINTS), a sphere packing (extended XYZ), or raw bytes with --dims");
 }
 
 }  // namespace cmp::flowrun

@@ -65,6 +65,22 @@ FlowCase image_case(const FlowImage& image, int M, int axis, bool periodic_axis)
 // cmp::ComputationError as image_case.
 FlowCase sphere_case(const voxel::Packing& packing, double delta, int M, int axis, bool periodic_axis);
 
+// How lbflow reads an input.
+struct InputOptions {
+  std::string dims;          // non-empty: raw bytes of these dimensions ("96x96x96")
+  int refine = 3;            // M
+  double delta = 0;          // sphere packings: voxel side [D0] (required for them)
+  double scale = 1, d0 = 0;  // sphere packings: radius factor; D0 (0: the file's, else the mean diameter)
+  int axis = 0;
+  bool periodic_axis = false;
+};
+
+// The case of one input, its format told from the content (io::Input) unless dims says raw
+// bytes: a VTK image, an extended XYZ sphere packing (one frame), or raw bytes; "-" reads a
+// VTK image or raw bytes from stdin. Throws cmp::InputError for anything else or a bad file,
+// cmp::UsageError for a packing without delta, and what image_case and sphere_case throw.
+FlowCase read_flow_case(const std::string& path, const InputOptions& options);
+
 // "x", "y", "z".
 const char* axis_name(int axis);
 

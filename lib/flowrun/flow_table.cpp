@@ -58,6 +58,21 @@ std::vector<std::string> flow_row(const FlowCase& c, const lbm::FlowSettings& s,
   return row;
 }
 
+std::string flow_summary(const FlowCase& c, const FlowOutcome& out, bool timings) {
+  const auto& r = out.result.final;
+  std::string s = fmt::format("{}: kappa {:.6g} lu = {:.6g} delta^2{}, tau_H {:.6g}, porosity {:.4f}, {} fluid nodes "
+                              "(M = {}), {} steps{}, Re {:.2g}, Ma {:.2g}",
+                              c.file, r.kappa_lu, r.kappa_lu / (c.refine * c.refine),
+                              c.d0 ? fmt::format(" = {:.6g} D0^2", r.kappa_lu * std::pow(c.node_spacing[c.axis] / *c.d0, 2)) : "",
+                              r.tortuosity, c.porosity, out.fluid_nodes, c.refine, r.steps,
+                              out.result.converged ? "" : " (not converged)", r.reynolds, r.mach);
+  if (c.dropped_pockets > 0) s += fmt::format(", {} isolated pockets dropped", c.dropped_pockets);
+  if (timings)
+    s += fmt::format(", {:.2f} s, {:.1f} MLUPS", out.seconds,
+                     out.seconds > 0 ? static_cast<double>(out.fluid_nodes) * out.steps_run / out.seconds / 1e6 : 0.0);
+  return s;
+}
+
 void write_flow_meta(io::CsvWriter& csv, const std::string& provenance, const lbm::FlowSettings& s,
                      const lbm::ConvergenceSettings& conv) {
   csv.meta("provenance", provenance);

@@ -35,6 +35,11 @@ std::vector<std::string> flow_columns(bool timings);
 std::vector<std::string> flow_row(const FlowCase& c, const lbm::FlowSettings& settings, const FlowOutcome& outcome,
                                   bool timings);
 
+// The one-line summary of a run for stderr (without the "lbflow: " prefix): kappa in lattice
+// units, delta^2 and D0^2, tau_H, porosity, nodes, steps, Re, Ma, dropped pockets; the wall
+// time and MLUPS with timings.
+std::string flow_summary(const FlowCase& c, const FlowOutcome& outcome, bool timings);
+
 // The "# key=value" lines of the table: provenance, the solver settings, the convergence
 // rule, and what the columns mean (units).
 void write_flow_meta(io::CsvWriter& csv, const std::string& provenance, const lbm::FlowSettings& settings,

@@ -11,15 +11,12 @@
 #include "core/errors.hpp"
 #include "flowrun/checkpoint_file.hpp"
 #include "flowrun/flow_case.hpp"
-#include "flowrun/flow_image.hpp"
 #include "flowrun/flow_run.hpp"
 #include "flowrun/flow_table.hpp"
 #include "flowrun/flow_vtk.hpp"
 #include "io/atomic_output.hpp"
 #include "io/csv.hpp"
-#include "io/input.hpp"
 #include "lbm/collision.hpp"
-#include "voxel/packing.hpp"
 #include "voxel/percolation.hpp"
 
 #include <fmt/format.h>
@@ -159,49 +156,13 @@ Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& ar
   return p;
 }
 
-// Reads an input as a FlowCase; the format told from the content unless --dims says raw.
-flowrun::FlowCase read_case(const Options& o, const std::string& path, int axis, bool periodic_axis) {
-  if (!o.dims.empty()) return flowrun::image_case(flowrun::read_raw_image(path, flowrun::parse_dims(o.dims)), o.refine, axis, periodic_axis);
-  std::optional<io::InputFormat> format;
-  if (path != "-") {
-    io::Input probe(path);
-    format = probe.format();
-  }
-  if (path == "-" || format == io::InputFormat::vtk)
-    return flowrun::image_case(flowrun::read_vtk_image(path), o.refine, axis, periodic_axis);
-  if (format == io::InputFormat::xyz) {
-    if (!(o.delta > 0))
-      throw UsageError(path + ": a sphere packing needs --delta (the voxel side in D0; the node side is delta/M)");
-    auto packings = voxel::read_packings(path, {o.scale, o.d0});
-    if (packings.size() != 1) throw InputError(path, 0, "holds several frames: give lbflow one packing per file");
-    return flowrun::sphere_case(packings.front(), o.delta, o.refine, axis, periodic_axis);
-  }
-  io::Input input(path);
-  input.fail_format("a VTK image (STRUCTURED_POINTS), a sphere packing (extended XYZ), or raw bytes with --dims");
-}
-
-std::string summary(const flowrun::FlowCase& c, const flowrun::FlowOutcome& out, bool timings) {
-  const auto& r = out.result.final;
-  std::string s = fmt::format("{}: kappa {:.6g} lu = {:.6g} delta^2{}, tau_H {:.6g}, porosity {:.4f}, {} fluid nodes "
-                              "(M = {}), {} steps{}, Re {:.2g}, Ma {:.2g}",
-                              c.file, r.kappa_lu, r.kappa_lu / (c.refine * c.refine),
-                              c.d0 ? fmt::format(" = {:.6g} D0^2", r.kappa_lu * std::pow(c.node_spacing[c.axis] / *c.d0, 2)) : "",
-                              r.tortuosity, c.porosity, out.fluid_nodes, c.refine, r.steps,
-                              out.result.converged ? "" : " (not converged)", r.reynolds, r.mach);
-  if (c.dropped_pockets > 0) s += fmt::format(", {} isolated pockets dropped", c.dropped_pockets);
-  if (timings)
-    s += fmt::format(", {:.2f} s, {:.1f} MLUPS", out.seconds,
-                     out.seconds > 0 ? static_cast<double>(out.fluid_nodes) * out.steps_run / out.seconds / 1e6 : 0.0);
-  return s;
-}
-
 int run(const Options& o, const Plan& plan, const std::string& provenance) {
   const int axis = plan.run.flow.axis;
   const bool periodic_axis = plan.run.flow.driving == lbm::Driving::kBodyForce;
   // Every input is read and checked first: a bad or non-percolating one stops the run
   // before any output is written.
   std::vector<flowrun::FlowCase> cases;
-  for (const auto& path : o.inputs) cases.push_back(read_case(o, path, axis, periodic_axis));
+  for (const auto& path : o.inputs) cases.push_back(flowrun::read_flow_case(path, {o.dims, o.refine, o.delta, o.scale, o.d0, axis, periodic_axis}));
   io::AtomicOutput csv_out(o.csv);
   io::CsvWriter csv(csv_out.stream());
   flowrun::write_flow_meta(csv, provenance, plan.run.flow, plan.run.convergence);
@@ -231,7 +192,7 @@ int run(const Options& o, const Plan& plan, const std::string& provenance) {
     csv.row(flowrun::flow_row(c, plan.run.flow, out, o.timings));
     if (history)
       for (const auto& row : flowrun::history_rows(c, out.result, plan.run.convergence.window)) history->row(row);
-    if (!o.common.quiet || o.timings) std::cerr << "lbflow: " << summary(c, out, o.timings) << '\n';
+    if (!o.common.quiet || o.timings) std::cerr << "lbflow: " << flowrun::flow_summary(c, out, o.timings) << '\n';
     const auto& r = out.result.final;
     if (r.mach > 0.1 || r.reynolds > 1)
       std::cerr << fmt::format("lbflow: warning: {}: Mach number {:.3g} (max |u| / c_s), Reynolds number {:.3g}: the "
