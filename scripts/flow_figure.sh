@@ -37,11 +37,11 @@ echo "== kcfit: Eq. 5.8 on kappa (D0^2, log loss) and the tortuosity law on tau_
 "$build/bin/kcfit" "$dir/flows.csv" --model tortuosity -q -o "$dir/tau_fit.csv"
 echo "== refinement: M = 1, 2, 3 on a packing of 16 spheres, loose and tight" >&2
 "$build/bin/shellpack" jam -N 16 --seed 1 -q -o "$dir/jammed/small.xyz" --csv /dev/null
-"$build/bin/percolate" "$dir/jammed/small.xyz" --delta "$delta" --scale 1.00,1.08 -q --csv "$dir/percolate_small.csv" \
+"$build/bin/percolate" "$dir/jammed/small.xyz" --delta "$delta" --scale 1.00,1.04 -q --csv "$dir/percolate_small.csv" \
   -o "$dir/images/small_{scale}.vtk"
 rm -f "$dir/refine.csv"
 for m in 1 2 3; do
-  "$build/bin/lbflow" "$dir/images/small_1.00.vtk" "$dir/images/small_1.08.vtk" --refine $m --threads 2 -q \
+  "$build/bin/lbflow" "$dir/images/small_1.00.vtk" "$dir/images/small_1.04.vtk" --refine $m --threads 2 -q \
     -o "$dir/refine_$m.csv"
   if [ $m = 1 ]; then cat "$dir/refine_$m.csv"; else grep -v '^#' "$dir/refine_$m.csv" | tail -n +2; fi >> "$dir/refine.csv"
   rm "$dir/refine_$m.csv"

@@ -35,12 +35,12 @@ set xrange [0.5:3.5]
 set xtics 1
 set ylabel "{/Symbol k}(M) / {/Symbol k}(3)"
 set title "refinement (thesis 5.3.3): N = 16, loose and tight"
-stats refine using (column("refine") == 3 && column("scale") > 1.04 ? column("permeability_d02") : 1/0) nooutput; K3t = STATS_mean
-stats refine using (column("refine") == 3 && column("scale") < 1.04 ? column("permeability_d02") : 1/0) nooutput; K3l = STATS_mean
+stats refine using (column("refine") == 3 && column("scale") > 1.02 ? column("permeability_d02") : 1/0) nooutput; K3t = STATS_mean
+stats refine using (column("refine") == 3 && column("scale") < 1.02 ? column("permeability_d02") : 1/0) nooutput; K3l = STATS_mean
 set key top right
-plot refine using (column("scale") > 1.04 ? column("refine") : 1/0):(column("permeability_d02") / K3t) \
-       with linespoints pt 7 lc rgb "#d55e00" title "tight (scale 1.08)", \
-     refine using (column("scale") < 1.04 ? column("refine") : 1/0):(column("permeability_d02") / K3l) \
+plot refine using (column("scale") > 1.02 ? column("refine") : 1/0):(column("permeability_d02") / K3t) \
+       with linespoints pt 7 lc rgb "#d55e00" title "tight (scale 1.04)", \
+     refine using (column("scale") < 1.02 ? column("refine") : 1/0):(column("permeability_d02") / K3l) \
        with linespoints pt 5 lc rgb "#0072b2" title "loose (scale 1.00)", \
      1 lc rgb "#888888" dt 2 notitle
 unset multiplot
