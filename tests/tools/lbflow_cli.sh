@@ -218,14 +218,14 @@ case_refinement_converges() {
   # Thesis 5.3.3: every voxel of percolate's image refined into M^3 nodes. On an image whose
   # throats are one or two voxels wide (a sphere of radius 0.42 in a unit cell, delta 1/8),
   # kappa in D0^2 converges as M grows (successive changes shrink about threefold) and M = 1
-  # is far off (a third too high here).
+  # is far off (22 % too high here).
   cluster_vtk 0.42
   for M in 1 2 3; do "$lbflow" c.vtk --refine $M --tol 1e-5 -q > m$M.csv || fail "M = $M"; done
   /usr/bin/python3 - "$(field m1.csv permeability_d02)" "$(field m2.csv permeability_d02)" "$(field m3.csv permeability_d02)" <<'PY' || fail "refinement"
 import sys
 k1, k2, k3 = map(float, sys.argv[1:])
 assert abs(k2 - k3) < abs(k1 - k2) / 2.5, (k1, k2, k3)
-assert k1 > 1.2 * k3, (k1, k3)
+assert k1 > 1.15 * k3, (k1, k3)
 PY
 }
 case_exact_walls_remove_the_staircase() {
