@@ -7,7 +7,7 @@
 # S5.1 model i, log loss as Fig. 5.5) to kappa in D0^2 and the tortuosity law tau_H =
 # C (phi - phi_c)^-0.38 (Fig. 5.4B) to tau_H. A second, small packing (16 spheres) at its
 # loosest and tightest percolating inflation runs at M = 1, 2, 3 (thesis 5.3.3: kappa in D0^2
-# converges with M, M = 1 fails in narrow throats). About 3 minutes on 2 cores.
+# converges with M, M = 1 fails in narrow throats). 6-8 minutes on 2 (busy) cores.
 # Writes $out/flow/{percolate.csv,flows.csv,kappa_fit.csv,tau_fit.csv,refine.csv} and
 # $out/flow.png.
 set -euo pipefail

@@ -199,7 +199,8 @@ int run(const Options& o, const Plan& plan, const std::string& provenance) {
                                "flow leaves the Stokes regime (keep Ma below 0.1 and Re below 1): lower --{}\n",
                                c.file, r.mach, r.reynolds, o.drive == "force" ? "body-force" : "density-drop");
     if (!out.result.converged) {
-      const auto change = flowrun::relative_change(out.result.history, out.result.history.size() - 1, o.window);
+      const auto& h = out.result.history;
+      const auto change = h.empty() ? std::nullopt : flowrun::relative_change(h, h.size() - 1, o.window);
       stalled.push_back(fmt::format("{}: not converged after {} steps (--max-steps): kappa {:.6g} lu, relative change "
                                     "{} over the last {} checks, --tol {}{}",
                                     c.file, r.steps, r.kappa_lu, change ? fmt::format("{:.3g}", *change) : "unknown",
