@@ -15,8 +15,9 @@ def _row(r):
     else:
         est = ""
         if "steps" in _m1_steps:
-            total = _m1_steps["steps"] * m * m
-            est = f"; to convergence ~{total} steps = ~{total * s / steps / 60:.0f} min (M^2 x the M = 1 steps)"
+            total = int(round(1.4 * _m1_steps["steps"], -2))
+            est = (f"; to convergence ~{total} steps = ~{total * s / steps / 60:.0f} min (1.4x the M = 1 steps, "
+                   f"as the refinement runs of make flow-figure took)")
         figure = (f"{float(r['mlups']):.0f} MLUPS over {steps} steps, {float(r['bytes_per_fluid_node']):.0f} "
                   f"B/fluid node, peak {r['peak_rss_mb']} MB{est}")
     return (f"lbflow (whole program), {r['threads']} thread(s)", size, figure,
