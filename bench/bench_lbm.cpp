@@ -97,27 +97,16 @@ int speed(int n, int threads, const std::string& style, long steps) {
   return 0;
 }
 
-// Zick & Homsy (1982), Table 2, simple cubic array: drag K = F / (6 pi mu a U) against the
-// solid fraction c, U the superficial velocity, F = |grad p| L^3 per sphere. Values as
-// tabulated by the Basilisk test src/test/spheres.c; the dilute ones agree with Hasimoto's
-// (1959) series as extended by Sangani & Acrivos (1982):
-//   1/K = 1 - 1.7601 c^(1/3) + c - 1.5593 c^2 + 3.9799 c^(8/3) - 3.0734 c^(10/3).
-struct Reference {
-  double c, K;
-};
-constexpr Reference kZickHomsy[] = {{0.027, 2.008}, {0.064, 2.810}, {0.125, 4.292}, {0.216, 7.442},
-                                    {0.343, 15.4},  {0.45, 28.1},   {0.5236, 42.1}};
-
 int sphere_array(const std::vector<int>& sizes) {
   std::printf("solid_fraction,K_zick_homsy,N,radius,kappa_ref,kappa_halfway,err_halfway,kappa_interpolated,err_interpolated,steps\n");
-  for (const Reference& ref : kZickHomsy) {
+  for (const DragReference& ref : zick_homsy_simple_cubic()) {
     for (int n : sizes) {
-      const double a = n * std::cbrt(3 * ref.c / (4 * std::numbers::pi));
-      const double kref = std::pow(n, 3) / (6 * std::numbers::pi * a * ref.K);
+      const double a = n * std::cbrt(3 * ref.solid_fraction / (4 * std::numbers::pi));
+      const double kref = sphere_array_kappa(n, ref.solid_fraction, ref.K);
       double kappa[2];
       long steps = 0;
       for (int interp = 0; interp < 2; ++interp) {
-        PoreLattice p = simple_cubic_array(n, ref.c);
+        PoreLattice p = simple_cubic_array(n, ref.solid_fraction);
         if (!interp) p.wall_fraction = nullptr;
         FlowSettings s;
         s.driving = Driving::kBodyForce;
@@ -132,7 +121,7 @@ int sphere_array(const std::vector<int>& sizes) {
         kappa[interp] = r.final.kappa_lu;
         steps = std::max(steps, r.final.steps);
       }
-      std::printf("%.4f,%.3f,%d,%.3f,%.5g,%.5g,%+.4f,%.5g,%+.4f,%ld\n", ref.c, ref.K, n, a, kref, kappa[0],
+      std::printf("%.4f,%.3f,%d,%.3f,%.5g,%.5g,%+.4f,%.5g,%+.4f,%ld\n", ref.solid_fraction, ref.K, n, a, kref, kappa[0],
                   kappa[0] / kref - 1, kappa[1], kappa[1] / kref - 1, steps);
       std::fflush(stdout);
     }

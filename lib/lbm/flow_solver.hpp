@@ -1,8 +1,8 @@
 #pragma once
 // D3Q19 lattice Boltzmann solver for Stokes flow through the pore space of a PoreLattice.
 //
-// Storage: populations of FLUID NODES ONLY (structure of arrays, slot (q, n) at q*stride + n),
-// plus a link table: for fluid node n and direction q = 1..18 the slot that the population
+// Storage: populations of FLUID NODES ONLY (blocks of 8 nodes, 19 directions per block,
+// lbm/layout.hpp), plus a link table: for fluid node n and direction q = 1..18 the slot that the population
 // leaving n along c_q goes to, resolved at build time: slot (q, neighbour) when the
 // neighbour n + c_q is fluid, slot (opposite(q), n) when it is solid (half-way bounce-back)
 // or outside the box along the flow axis (pressure driving, below). Solid nodes cost
@@ -14,7 +14,9 @@
 // odd steps gather through the link table and scatter back through it. Every slot is read
 // and written by one node per step, so one array suffices, nodes may run in any order on
 // any thread, and results are bit-identical for any thread count. The hot loop works on
-// batches of 8 nodes with no branches and no divisions (lbm/sweep_kernel.hpp).
+// batches of 8 nodes with no branches and no divisions (lbm/sweep_kernel.hpp). Walls with
+// interpolated bounce-back and the pressure nodes are fixed up after each sweep, link by
+// link and node by node, in a fixed order.
 //
 // Layout along the flow axis: fluid nodes are numbered slab by slab along the flow axis
 // (the axis coordinate is the slowest index), so a slab of planes is one contiguous node
@@ -36,6 +38,9 @@
 //    Poiseuille permeability by 5-25 % on short channels.)
 //  - kBodyForce: fully periodic box, a uniform force density g along the axis on the fluid
 //    (Guo forcing), |grad p| := g (a body force is equivalent to that pressure gradient).
+//
+// Steady flow (a few thousand steps on test lattices) needs no special start: the solver
+// starts at rest on the linear density ramp of the pressure drop.
 //
 // Observables (observe()): kappa_lu = nu <u_axis> / |grad p|, <u_axis> the superficial mean
 // over the WHOLE box (solid nodes count as zero velocity), nu = (tau - 1/2)/3, rho_0 = 1.

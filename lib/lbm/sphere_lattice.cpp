@@ -72,4 +72,21 @@ PoreLattice simple_cubic_array(int n, double solid_fraction) {
   return periodic_spheres(n, n, n, {{c, c, c, r}});
 }
 
+namespace {
+constexpr DragReference kZickHomsy[] = {{0.027, 2.008}, {0.064, 2.810}, {0.125, 4.292}, {0.216, 7.442},
+                                        {0.343, 15.4},  {0.45, 28.1},   {0.5236, 42.1}};
+}  // namespace
+
+std::span<const DragReference> zick_homsy_simple_cubic() { return kZickHomsy; }
+
+double hasimoto_drag(double c) {
+  return 1 / (1 - 1.7601 * std::cbrt(c) + c - 1.5593 * c * c + 3.9799 * std::pow(c, 8.0 / 3) -
+              3.0734 * std::pow(c, 10.0 / 3));
+}
+
+double sphere_array_kappa(int n, double c, double K) {
+  const double a = n * std::cbrt(3 * c / (4 * std::numbers::pi));
+  return std::pow(n, 3) / (6 * std::numbers::pi * a * K);
+}
+
 }  // namespace cmp::lbm

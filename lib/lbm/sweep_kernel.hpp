@@ -78,6 +78,9 @@ template <int B, bool kForce, class Relax>
   }
 }
 
+// Blocks ahead whose neighbour lines an odd step prefetches.
+inline constexpr int kPrefetchAhead = 4;
+
 // One AA step over [r.begin, r.end).
 template <class Real, bool kOdd, bool kForce, class Relax>
 [[gnu::always_inline]] inline void sweep_batches(const SweepRange<Real>& r, const Relax& relax) {
@@ -92,6 +95,10 @@ template <class Real, bool kOdd, bool kForce, class Relax>
       for (int q = 0; q < kQ; ++q)
         for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
     } else {
+      // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
+      // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
+      const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
+      for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
       for (int b = 0; b < B; ++b) f[0][b] = own[b];
       for (int q = 1; q < kQ; ++q)
         for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
