@@ -163,19 +163,12 @@ int run(const Options& o, const Plan& plan, const std::string& provenance) {
   // before any output is written.
   std::vector<flowrun::FlowCase> cases;
   for (const auto& path : o.inputs) cases.push_back(flowrun::read_flow_case(path, {o.dims, o.refine, o.delta, o.scale, o.d0, axis, periodic_axis}));
+  // The outputs' temporaries appear with their first row, not while the first flow runs.
   io::AtomicOutput csv_out(o.csv);
-  io::CsvWriter csv(csv_out.stream());
-  flowrun::write_flow_meta(csv, provenance, plan.run.flow, plan.run.convergence);
-  csv.header(flowrun::flow_columns(o.timings));
+  std::optional<io::CsvWriter> csv;
   std::optional<io::AtomicOutput> history_out;
   std::optional<io::CsvWriter> history;
-  if (!o.history.empty()) {
-    history_out.emplace(o.history);
-    history.emplace(history_out->stream());
-    history->meta("provenance", provenance);
-    history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
-    history->header(flowrun::history_columns());
-  }
+  if (!o.history.empty()) history_out.emplace(o.history);
   std::vector<std::string> stalled;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     auto& c = cases[i];
@@ -189,9 +182,21 @@ int run(const Options& o, const Plan& plan, const std::string& provenance) {
                                             "density in lattice units) | {}", c.file, c.refine, provenance));
     }
     c.release_lattice();
-    csv.row(flowrun::flow_row(c, plan.run.flow, out, o.timings));
-    if (history)
+    if (!csv) {
+      csv.emplace(csv_out.stream());
+      flowrun::write_flow_meta(*csv, provenance, plan.run.flow, plan.run.convergence);
+      csv->header(flowrun::flow_columns(o.timings));
+    }
+    csv->row(flowrun::flow_row(c, plan.run.flow, out, o.timings));
+    if (history_out) {
+      if (!history) {
+        history.emplace(history_out->stream());
+        history->meta("provenance", provenance);
+        history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
+        history->header(flowrun::history_columns());
+      }
       for (const auto& row : flowrun::history_rows(c, out.result, plan.run.convergence.window)) history->row(row);
+    }
     if (!o.common.quiet || o.timings) std::cerr << "lbflow: " << flowrun::flow_summary(c, out, o.timings) << '\n';
     const auto& r = out.result.final;
     if (r.mach > 0.1 || r.reynolds > 1)
