@@ -120,7 +120,7 @@ TEST_CASE("Poiseuille: with MRT and TRT kappa does not depend on tau, with BGK i
   }
 }
 
-TEST_CASE("porous box: TRT kappa does not depend on tau; MRT's fixed ghost rates leave a small dependence") {
+TEST_CASE("porous box: TRT kappa does not depend on tau, MRT (fixed ghost rates) only slightly") {
   PoreLattice p = periodic_spheres(20, 16, 16, {{4, 4, 4, 4.5}, {12, 10, 6, 5}, {7, 12, 13, 4}, {16, 3, 11, 3.5}, {2, 9, 9, 3}});
   p.wall_fraction = nullptr;
   for (const char* style : {"trt", "mrt"}) {
