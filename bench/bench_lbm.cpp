@@ -110,14 +110,7 @@ int sphere_array(const std::vector<int>& sizes) {
         if (!interp) p.wall_fraction = nullptr;
         FlowSettings s;
         s.driving = Driving::kBodyForce;
-        s.body_force = 1e-6;
-        FlowSolver solver(p, s);
-        ConvergenceSettings cs;
-        cs.tol = 1e-6;
-        cs.check_every = 50;
-        cs.window = 4;
-        cs.max_steps = 200000;
-        const SteadyStateResult r = run_to_steady_state(solver, cs);
+        const SteadyStateResult r = solve_steady(p, s, {1e-6, 50, 4, 200000});
         kappa[interp] = r.final.kappa_lu;
         steps = std::max(steps, r.final.steps);
       }

@@ -37,4 +37,10 @@ SteadyStateResult run_to_steady_state(FlowSolver& solver, const ConvergenceSetti
   return r;
 }
 
+SteadyStateResult solve_steady(const PoreLattice& lattice, const FlowSettings& settings,
+                               const ConvergenceSettings& convergence) {
+  FlowSolver solver(lattice, settings);
+  return run_to_steady_state(solver, convergence);
+}
+
 }  // namespace cmp::lbm

@@ -31,4 +31,9 @@ SteadyStateResult run_to_steady_state(FlowSolver& solver, const ConvergenceSetti
                                       const std::function<void(const FlowObservables&)>& on_check = {},
                                       std::vector<FlowObservables> earlier = {});
 
+// A solver on `lattice` run to steady state: the whole computation of a permeability check
+// (benchmarks, tests, a one-image run without checkpoints).
+SteadyStateResult solve_steady(const PoreLattice& lattice, const FlowSettings& settings,
+                               const ConvergenceSettings& convergence);
+
 }  // namespace cmp::lbm

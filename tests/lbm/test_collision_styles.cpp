@@ -4,6 +4,7 @@
 #include "lbm/collision_styles.hpp"
 #include "lbm/d3q19.hpp"
 #include "lbm/flow_solver.hpp"
+#include "lbm/pore_lattice.hpp"
 #include "lbm/steady_state.hpp"
 
 #include "core/errors.hpp"
@@ -99,5 +100,19 @@ TEST_CASE("collision styles: every style conserves mass and momentum, keeps the 
       op->relax(s);
       for (int q = 0; q < kQ; ++q) CHECK_THAT(s[q], WithinAbs(kCx[q] * kCy[q] / tau, 1e-14));
     }
+  }
+}
+
+TEST_CASE("collision styles: every style gives plane Poiseuille flow within 3 % of h^2/12 (h = 8, tau = 1)") {
+  const PoreLattice p = channel(2, 8, 0, 1);
+  const double exact = 8.0 * 8.0 / 12 * 8.0 / 10.0;  // superficial: 8 fluid of 10 nodes across
+  for (const auto& style : collision_styles()) {
+    FlowSettings s;
+    s.collision = style.name;
+    s.driving = Driving::kBodyForce;
+    const SteadyStateResult r = solve_steady(p, s, {1e-9, 50, 4, 100000});
+    INFO(style.name << " kappa/exact " << r.final.kappa_lu / exact);
+    REQUIRE(r.converged);
+    CHECK(std::abs(r.final.kappa_lu / exact - 1) < 0.03);
   }
 }

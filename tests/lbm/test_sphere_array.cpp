@@ -27,13 +27,7 @@ double kappa(int n, double shift, bool interpolated) {
   if (!interpolated) p.wall_fraction = nullptr;
   FlowSettings s;
   s.driving = Driving::kBodyForce;
-  s.body_force = 1e-6;
-  FlowSolver solver(p, s);
-  ConvergenceSettings cs;
-  cs.tol = 1e-6;
-  cs.check_every = 50;
-  cs.window = 4;
-  const SteadyStateResult r = run_to_steady_state(solver, cs);
+  const SteadyStateResult r = solve_steady(p, s, {1e-6, 50, 4, 100000});
   REQUIRE(r.converged);
   return r.final.kappa_lu;
 }
