@@ -10,7 +10,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures run install clean clean-results
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -78,6 +78,10 @@ percolation-figure: deps all
 # Chapter 3 at small boxes (jam2d): Figs 3.1h, 3.2a, 3.3, S3.2 and the targets' table ($(OUT)/figures/).
 jam2d-figures: deps all
 	@scripts/jam2d_figures.sh $(BUILD) $(OUT)/figures
+# The Chapter 5 chain on inflated jammed spheres: shellpack jam -> percolate -> lbflow -> kcfit,
+# kappa and tau_H against porosity with Eq. 5.8 and the tortuosity law, and the refinement M ($(OUT)/figures/).
+flow-figure: deps all
+	@scripts/flow_figure.sh $(BUILD) $(OUT)/figures
 
 # The demo pipeline (scripts/demo.sh): every tool that exists so far, outputs in $(OUT)/demo/.
 run: deps all

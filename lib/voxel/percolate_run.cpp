@@ -96,8 +96,10 @@ std::string run_percolate(const PackingFrames& frames, const PercolatePlan& plan
       img.origin = 0.5 * a.grid.spacing;  // overlays the packing; points at the voxel centres
       img.name = "cluster";
       img.data = std::move(cluster);
-      // What lbflow and a ParaView user need to put the image back in D0 units.
-      img.field_data = {{"delta", plan.deltas[run.delta]}, {"d0", p.d0}, {"scale", p.scale}};
+      // What lbflow and a ParaView user need to put the image back in D0 units, and the
+      // geometric porosity lbflow's rows carry on to kcfit (the image holds the cluster only).
+      img.field_data = {{"delta", plan.deltas[run.delta]}, {"d0", p.d0}, {"scale", p.scale},
+                        {"porosity", a.geometry.porosity}};
       result.title = fmt::format("percolating cluster along {} of {} scale={} delta={} D0={} ({}) marking={} "
                                  "(lengths in the packing's units) | {}",
                                  plan.axis_name, p.file, scale_name, delta_name, io::format_number(p.d0),

@@ -127,7 +127,9 @@ assert img.GetDimensions() == (20, 20, 20), img.GetDimensions()
 assert all(abs(s - 0.2) < 1e-12 for s in img.GetSpacing()), img.GetSpacing()
 fd = img.GetFieldData()
 values = {fd.GetArrayName(i): fd.GetArray(i).GetValue(0) for i in range(fd.GetNumberOfArrays())}
+porosity = values.pop("porosity")
 assert values == {"delta": 0.1, "d0": 2.0, "scale": 1.2}, values
+assert 0 < porosity < 1, porosity
 PY
 }
 case_frames_are_packings() {

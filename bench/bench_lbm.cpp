@@ -1,0 +1,139 @@
+// lbflow's lattice Boltzmann core for make bench and the README's validation table:
+//   bench_lbm speed N THREADS [STYLE] [STEPS]  MLUPS of a dense N^3 periodic box and of a porous
+//                                              N^3 box (random overlapping spheres, porosity ~0.35),
+//                                              beside a STREAM-style triad measured in the same run
+//   bench_lbm sphere-array [N...]              kappa of the simple cubic sphere array against
+//                                              Zick & Homsy (1982) for several solid fractions and
+//                                              resolutions, half-way vs interpolated bounce-back
+// Each prints CSV with a header line.
+#include "lbm/flow_solver.hpp"
+#include "lbm/sphere_lattice.hpp"
+#include "lbm/steady_state.hpp"
+
+#include "core/random.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+using namespace cmp;
+using namespace cmp::lbm;
+
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// STREAM triad a = b + 3 c on `threads` threads, static partition; best of 5, GB/s counting
+// 24 bytes per element (as STREAM does; write-allocate traffic not counted).
+double triad_gbs(int threads) {
+  const long n = 1L << 25;
+  std::unique_ptr<double[]> a(new double[n]), b(new double[n]), c(new double[n]);
+  omp_set_num_threads(threads);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    a[i] = 0;
+    b[i] = 1;
+    c[i] = 2;
+  }
+  double best = 1e30;
+  for (int rep = 0; rep < 5; ++rep) {
+    const double t0 = now();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) a[i] = b[i] + 3 * c[i];
+    best = std::min(best, now() - t0);
+  }
+  volatile double sink = a[n / 2];
+  (void)sink;
+  return 24.0 * n / best / 1e9;
+}
+
+// Random overlapping spheres of radius r until the porosity drops below `target`.
+PoreLattice porous_box(int n, double target) {
+  Random rng(2026);
+  std::vector<LatticeSphere> s;
+  const double r = n / 12.0;
+  PoreLattice p = open_box(n, n, n);
+  while (true) {
+    for (int k = 0; k < 16; ++k) s.push_back({rng.uniform(0, n), rng.uniform(0, n), rng.uniform(0, n), r});
+    p = periodic_spheres(n, n, n, s);
+    if (p.porosity() < target) break;
+  }
+  p.wall_fraction = nullptr;
+  return p;
+}
+
+int speed(int n, int threads, const std::string& style, long steps) {
+  std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound\n");
+  const double bw = triad_gbs(threads);
+  for (int porous = 0; porous < 2; ++porous) {
+    const PoreLattice p = porous ? porous_box(n, 0.35) : open_box(n, n, n);
+    FlowSettings s;
+    s.collision = style;
+    s.driving = porous ? Driving::kPressure : Driving::kBodyForce;
+    omp_set_num_threads(threads);
+    FlowSolver solver(p, s);
+    solver.step(2);  // first touch, warm-up
+    double best = 1e30;
+    for (int rep = 0; rep < 3; ++rep) {
+      const double t0 = now();
+      solver.step(steps);
+      best = std::min(best, now() - t0);
+    }
+    const double mlups = solver.fluid_nodes() * static_cast<double>(steps) / best / 1e6;
+    // Lower bound of the memory traffic of one update: 19 populations read and written.
+    const double bound = bw * 1e9 / (2 * 19 * 8) / 1e6;
+    std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f\n", porous ? "porous" : "dense", n, p.porosity(),
+                threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw, bound,
+                mlups / bound);
+  }
+  return 0;
+}
+
+int sphere_array(const std::vector<int>& sizes) {
+  std::printf("solid_fraction,K_zick_homsy,N,radius,kappa_ref,kappa_halfway,err_halfway,kappa_interpolated,err_interpolated,steps\n");
+  for (const DragReference& ref : zick_homsy_simple_cubic()) {
+    for (int n : sizes) {
+      const double a = n * std::cbrt(3 * ref.solid_fraction / (4 * std::numbers::pi));
+      const double kref = sphere_array_kappa(n, ref.solid_fraction, ref.K);
+      double kappa[2];
+      long steps = 0;
+      for (int interp = 0; interp < 2; ++interp) {
+        PoreLattice p = simple_cubic_array(n, ref.solid_fraction);
+        if (!interp) p.wall_fraction = nullptr;
+        FlowSettings s;
+        s.driving = Driving::kBodyForce;
+        const SteadyStateResult r = solve_steady(p, s, {1e-6, 50, 4, 200000});
+        kappa[interp] = r.final.kappa_lu;
+        steps = std::max(steps, r.final.steps);
+      }
+      std::printf("%.4f,%.3f,%d,%.3f,%.5g,%.5g,%+.4f,%.5g,%+.4f,%ld\n", ref.solid_fraction, ref.K, n, a, kref, kappa[0],
+                  kappa[0] / kref - 1, kappa[1], kappa[1] / kref - 1, steps);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "speed" && argc >= 4)
+    return speed(std::atoi(argv[2]), std::atoi(argv[3]), argc > 4 ? argv[4] : "mrt", argc > 5 ? std::atol(argv[5]) : 20);
+  if (mode == "sphere-array") {
+    std::vector<int> sizes;
+    for (int i = 2; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
+    if (sizes.empty()) sizes = {16, 24, 32};
+    return sphere_array(sizes);
+  }
+  std::fprintf(stderr, "usage: bench_lbm speed N THREADS [STYLE] [STEPS] | sphere-array [N...]\n");
+  return 2;
+}

@@ -1,0 +1,34 @@
+#pragma once
+// lbflow's checkpoint file: what `lbflow --resume FILE` needs to continue a run to exactly the
+// result of an uninterrupted one. A text header naming the run (the command-line arguments
+// that define it, so `--resume FILE` alone repeats them), then the solver's own binary state
+// (lbm::FlowSolver::save: populations, step count, fingerprint of lattice and settings, and
+// the convergence checks so far):
+//   lbflow checkpoint 1
+//   args <n>
+//   <length> <argument bytes>        (n lines)
+//   state
+//   <FlowSolver::save bytes>
+#include "lbm/flow_solver.hpp"
+
+#include <string>
+#include <vector>
+
+namespace cmp::flowrun {
+
+// Writes the checkpoint atomically (io::AtomicOutput: a run killed while writing leaves the
+// previous checkpoint intact). Throws cmp::InputError(path, 0, ...) when it cannot be written.
+void write_checkpoint(const std::string& path, const std::vector<std::string>& args, const lbm::FlowSolver& solver,
+                      const std::vector<lbm::FlowObservables>& history);
+
+// The arguments a checkpoint was written with. Throws cmp::InputError(path, line, ...) when the
+// file is missing or is not an lbflow checkpoint.
+std::vector<std::string> read_checkpoint_args(const std::string& path);
+
+// Loads the state into solver and returns the checks so far. Throws cmp::InputError(path, 0,
+// ...) as read_checkpoint_args, and when the state belongs to another run (its fingerprint
+// differs from solver's: another input, refinement, collision model, tau, drive, ...) or is
+// truncated; the solver is then unchanged.
+std::vector<lbm::FlowObservables> load_checkpoint(const std::string& path, lbm::FlowSolver& solver);
+
+}  // namespace cmp::flowrun

@@ -1,0 +1,170 @@
+#pragma once
+// The fused stream-collide hot loop (internal to lib/lbm). Each collision style's .cpp
+// instantiates it with its own relaxation functor, so the relaxation is inlined into the loop
+// and the only virtual call is one per node range.
+//
+// A relaxation functor R has `void operator()(double (&g)[kQ]) const`, replacing the
+// non-equilibrium part g of one node by R g (linear, see lbm/collision.hpp); the batch loop
+// around it is vectorised (omp simd), so R must be straight-line code.
+//
+// Nodes go in batches of kBatch: gather 19 populations per node into a local array, collide
+// there (vectorised across the batch), scatter back. No branches inside a batch and no
+// divisions anywhere: the AA parity and the forcing are template parameters.
+#include "lbm/collision.hpp"
+#include "lbm/d3q19.hpp"
+#include "lbm/layout.hpp"
+
+#include <cstdint>
+
+namespace cmp::lbm::kernel {
+
+// Equilibrium, Guo forcing and relaxation of one node in place: f -> post-collision. Every
+// loop over directions is unrolled, so the velocities and weights are constants.
+template <bool kForce, class Relax>
+[[gnu::always_inline]] inline void collide_node(double (&f)[kQ], double gx, double gy, double gz, const Relax& relax) {
+  double rho = 0, ux = 0, uy = 0, uz = 0;
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    rho += f[q];
+    if (kCx[q] != 0) ux += kCx[q] * f[q];
+    if (kCy[q] != 0) uy += kCy[q] * f[q];
+    if (kCz[q] != 0) uz += kCz[q] * f[q];
+  }
+  if constexpr (kForce) {
+    ux += 0.5 * gx;
+    uy += 0.5 * gy;
+    uz += 0.5 * gz;
+  }
+  const double uu = ux * ux + uy * uy + uz * uz;
+  double g[kQ], s[kQ];
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    const double w = weight(q);
+    const double cu = kCx[q] * ux + kCy[q] * uy + kCz[q] * uz;
+    const double feq = w * (rho + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
+    g[q] = f[q] - feq;
+    if constexpr (kForce) {
+      const double cg = kCx[q] * gx + kCy[q] * gy + kCz[q] * gz;
+      const double ug = ux * gx + uy * gy + uz * gz;
+      s[q] = w * (3.0 * cg + 9.0 * cu * cg - 3.0 * ug);
+      g[q] += 0.5 * s[q];
+    }
+  }
+  relax(g);
+#pragma GCC unroll 19
+  for (int q = 0; q < kQ; ++q) {
+    f[q] -= g[q];
+    if constexpr (kForce) f[q] += s[q];
+  }
+}
+
+// The same on a batch f[q][b], vectorised across the batch.
+template <int B, bool kForce, class Relax>
+[[gnu::always_inline]] inline void collide_batch(double (&f)[kQ][B], const double* force, const Relax& relax) {
+  double gx = 0, gy = 0, gz = 0;
+  if constexpr (kForce) {
+    gx = force[0];
+    gy = force[1];
+    gz = force[2];
+  }
+#pragma omp simd
+  for (int b = 0; b < B; ++b) {
+    double node[kQ];
+#pragma GCC unroll 19
+    for (int q = 0; q < kQ; ++q) node[q] = f[q][b];
+    collide_node<kForce>(node, gx, gy, gz, relax);
+#pragma GCC unroll 19
+    for (int q = 0; q < kQ; ++q) f[q][b] = node[q];
+  }
+}
+
+// Blocks ahead whose neighbour lines an odd step prefetches.
+inline constexpr int kPrefetchAhead = 4;
+
+// One AA step over [r.begin, r.end).
+template <class Real, bool kOdd, bool kForce, class Relax>
+[[gnu::always_inline]] inline void sweep_batches(const SweepRange<Real>& r, const Relax& relax) {
+  constexpr int B = kBatch;
+  Real* __restrict F = r.f;
+  const std::uint32_t* __restrict L = r.links;
+  for (long base = r.begin; base < r.end; base += B) {
+    Real* __restrict own = F + kQ * base;                     // this block's populations
+    const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
+    double f[kQ][B];
+    if constexpr (!kOdd) {
+      for (int q = 0; q < kQ; ++q)
+        for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
+    } else {
+      // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
+      // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
+      const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
+      for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
+      for (int b = 0; b < B; ++b) f[0][b] = own[b];
+      for (int q = 1; q < kQ; ++q)
+        for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
+    }
+    collide_batch<B, kForce>(f, r.force, relax);
+    if constexpr (!kOdd) {
+      for (int q = 0; q < kQ; ++q)
+        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = static_cast<Real>(f[q][b]);
+    } else {
+      for (int b = 0; b < B; ++b) own[b] = static_cast<Real>(f[0][b]);
+      for (int q = 1; q < kQ; ++q)
+        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = static_cast<Real>(f[q][b]);
+    }
+  }
+}
+
+// Dispatch on parity and forcing.
+template <class Real, class Relax>
+[[gnu::always_inline]] inline void sweep(const SweepRange<Real>& r, const Relax& relax) {
+  if (r.odd) {
+    if (r.force) sweep_batches<Real, true, true>(r, relax);
+    else sweep_batches<Real, true, false>(r, relax);
+  } else {
+    if (r.force) sweep_batches<Real, false, true>(r, relax);
+    else sweep_batches<Real, false, false>(r, relax);
+  }
+}
+
+// One node (for the tests' collide()).
+template <class Relax>
+inline void collide_one(double f[kQ], const double* force, const Relax& relax) {
+  double batch[kQ][1];
+  for (int q = 0; q < kQ; ++q) batch[q][0] = f[q];
+  if (force) collide_batch<1, true>(batch, force, relax);
+  else collide_batch<1, false>(batch, force, relax);
+  for (int q = 0; q < kQ; ++q) f[q] = batch[q][0];
+}
+
+template <class Relax>
+inline void relax_one(double g[kQ], const Relax& relax) {
+  double node[kQ];
+  for (int q = 0; q < kQ; ++q) node[q] = g[q];
+  relax(node);
+  for (int q = 0; q < kQ; ++q) g[q] = node[q];
+}
+
+// A CollisionOperator from a relaxation functor; the style files define
+//   [[gnu::target_clones("avx2", "default")]] void sweep_<style>(const SweepRange<Real>&, const Relax&)
+// so the hot loop gets an AVX2 clone, and wrap it in this class.
+template <class Relax>
+class OperatorFrom : public CollisionOperator {
+ public:
+  using SweepD = void (*)(const SweepRange<double>&, const Relax&);
+  using SweepF = void (*)(const SweepRange<float>&, const Relax&);
+  OperatorFrom(const char* name, const Relax& relax, SweepD sd, SweepF sf) : name_(name), relax_(relax), sd_(sd), sf_(sf) {}
+  const char* name() const override { return name_; }
+  void relax(double g[kQ]) const override { relax_one(g, relax_); }
+  void collide(double f[kQ], const double* force) const override { collide_one(f, force, relax_); }
+  void sweep(const SweepRange<double>& r) const override { sd_(r, relax_); }
+  void sweep(const SweepRange<float>& r) const override { sf_(r, relax_); }
+
+ private:
+  const char* name_;
+  Relax relax_;
+  SweepD sd_;
+  SweepF sf_;
+};
+
+}  // namespace cmp::lbm::kernel

@@ -1,0 +1,118 @@
+// Every registered collision style: conservation, the equilibrium as a fixed point, the
+// relaxation rates it claims, and Poiseuille flow through the full solver.
+#include "lbm/collision.hpp"
+#include "lbm/collision_styles.hpp"
+#include "lbm/d3q19.hpp"
+#include "lbm/flow_solver.hpp"
+#include "lbm/pore_lattice.hpp"
+#include "lbm/steady_state.hpp"
+
+#include "core/errors.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace cmp::lbm;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+void moments(const double f[19], double& rho, double j[3]) {
+  rho = 0;
+  j[0] = j[1] = j[2] = 0;
+  for (int q = 0; q < kQ; ++q) {
+    rho += f[q];
+    j[0] += kCx[q] * f[q];
+    j[1] += kCy[q] * f[q];
+    j[2] += kCz[q] * f[q];
+  }
+}
+
+void equilibrium(double rho, const double u[3], double f[19]) {
+  for (int q = 0; q < kQ; ++q) {
+    const double cu = kCx[q] * u[0] + kCy[q] * u[1] + kCz[q] * u[2];
+    const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    f[q] = weight(q) * (rho + 3 * cu + 4.5 * cu * cu - 1.5 * uu);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("D3Q19: weights sum to 1, lattice isotropy, opposite directions") {
+  double w = 0, cxx = 0, cxy = 0;
+  for (int q = 0; q < kQ; ++q) {
+    w += weight(q);
+    cxx += weight(q) * kCx[q] * kCx[q];
+    cxy += weight(q) * kCx[q] * kCy[q];
+    CHECK(kCx[opposite(q)] == -kCx[q]);
+    CHECK(kCy[opposite(q)] == -kCy[q]);
+    CHECK(kCz[opposite(q)] == -kCz[q]);
+  }
+  CHECK_THAT(w, WithinAbs(1, 1e-15));
+  CHECK_THAT(cxx, WithinAbs(kCs2, 1e-15));
+  CHECK_THAT(cxy, WithinAbs(0, 1e-15));
+}
+
+TEST_CASE("collision styles: registry names are unique and unknown names are refused") {
+  REQUIRE(collision_styles().size() >= 3);
+  CHECK(std::string(collision_styles()[0].name) == "mrt");
+  for (const auto& s : collision_styles()) CHECK(std::string(collision_style(s.name).name) == s.name);
+  CHECK_THROWS_AS(collision_style("lbgk"), cmp::UsageError);
+  CHECK_THROWS_AS(collision_style("mrt").make({0.5, 3.0 / 16}), cmp::UsageError);
+  CHECK_THROWS_AS(collision_style("trt").make({1.0, 0.0}), cmp::UsageError);
+}
+
+TEST_CASE("collision styles: every style conserves mass and momentum, keeps the equilibrium, adds the force") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  for (const auto& style : collision_styles()) {
+    for (double tau : {0.6, 1.0, 1.7}) {
+      INFO(style.name << " tau=" << tau);
+      const auto op = style.make({tau, 3.0 / 16});
+      CHECK(std::string(op->name()) == style.name);
+      // Equilibrium is a fixed point.
+      const double u[3] = {0.02, -0.01, 0.005};
+      double feq[19], f[19];
+      equilibrium(1.003, u, feq);
+      std::copy(feq, feq + 19, f);
+      op->collide(f, nullptr);
+      for (int q = 0; q < kQ; ++q) CHECK_THAT(f[q], WithinAbs(feq[q], 1e-15));
+      // Conservation for a perturbed state.
+      for (int q = 0; q < kQ; ++q) f[q] = feq[q] + noise(rng) * weight(q);
+      double rho0, j0[3], rho1, j1[3];
+      moments(f, rho0, j0);
+      op->collide(f, nullptr);
+      moments(f, rho1, j1);
+      CHECK_THAT(rho1, WithinAbs(rho0, 1e-14));
+      for (int d = 0; d < 3; ++d) CHECK_THAT(j1[d], WithinAbs(j0[d], 1e-14));
+      // A body force adds exactly g to the momentum (Guo forcing).
+      const double g[3] = {1e-4, -2e-4, 3e-5};
+      moments(f, rho0, j0);
+      op->collide(f, g);
+      moments(f, rho1, j1);
+      CHECK_THAT(rho1, WithinAbs(rho0, 1e-14));
+      for (int d = 0; d < 3; ++d) CHECK_THAT(j1[d], WithinAbs(j0[d] + g[d], 1e-14));
+      // Non-equilibrium decays: the shear stress moment relaxes at exactly 1/tau.
+      double s[19];
+      for (int q = 0; q < kQ; ++q) s[q] = kCx[q] * kCy[q];
+      op->relax(s);
+      for (int q = 0; q < kQ; ++q) CHECK_THAT(s[q], WithinAbs(kCx[q] * kCy[q] / tau, 1e-14));
+    }
+  }
+}
+
+TEST_CASE("collision styles: every style gives plane Poiseuille flow within 3 % of h^2/12 (h = 8, tau = 1)") {
+  const PoreLattice p = channel(2, 8, 0, 1);
+  const double exact = 8.0 * 8.0 / 12 * 8.0 / 10.0;  // superficial: 8 fluid of 10 nodes across
+  for (const auto& style : collision_styles()) {
+    FlowSettings s;
+    s.collision = style.name;
+    s.driving = Driving::kBodyForce;
+    const SteadyStateResult r = solve_steady(p, s, {1e-9, 50, 4, 100000});
+    INFO(style.name << " kappa/exact " << r.final.kappa_lu / exact);
+    REQUIRE(r.converged);
+    CHECK(std::abs(r.final.kappa_lu / exact - 1) < 0.03);
+  }
+}

@@ -1,0 +1,260 @@
+// lbflow: Stokes flow through the pore space by the D3Q19 lattice Boltzmann method:
+// permeability and hydraulic tortuosity of percolate's clusters (thesis 5.2.3, 5.3.3, 5.5.3).
+//   lbflow cluster.vtk --refine 3 > flow.csv                            permeability, tortuosity
+//   lbflow cluster.vtk --refine 3 --tol 1e-6 --vtk flow.vtk > flow.csv  and the velocity field
+//   lbflow image.raw --dims 96x96x96 --refine 1 --checkpoint run.chk    raw bytes; resumable
+//   lbflow --resume run.chk > flow.csv                                  continue after an interruption
+//   lbflow clusters/*.vtk --threads 2 > flows.csv                       many images, one row each
+//   lbflow jammed.xyz --delta 0.04 --scale 1.1 > flow.csv               the packing itself: exact walls
+#include "cli/seed_range.hpp"
+#include "cli/tool.hpp"
+#include "core/errors.hpp"
+#include "flowrun/checkpoint_file.hpp"
+#include "flowrun/flow_case.hpp"
+#include "flowrun/flow_run.hpp"
+#include "flowrun/flow_table.hpp"
+#include "flowrun/flow_vtk.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv.hpp"
+#include "lbm/collision.hpp"
+#include "voxel/percolation.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <set>
+
+using namespace cmp;
+
+namespace {
+
+struct Options {
+  cli::CommonOptions common;
+  std::vector<std::string> inputs;
+  std::string dims, collision = "mrt", axis = "x", drive = "pressure", precision = "double";
+  std::string csv = "-", vtk, history, checkpoint, resume;
+  int refine = 3;
+  double tau = 1.0, magic = 3.0 / 16.0, density_drop = 1e-3, body_force = 1e-6;
+  double delta = 0, scale = 1, d0 = 0, checkpoint_every = 300;
+  double tol = 1e-6;
+  long max_steps = 200000, check_every = 100, window = 10;
+  bool list = false, timings = false;
+};
+
+// The options that only steer this process (not the run): left out of a checkpoint's arguments.
+bool process_only(const std::string& a) {
+  return a == "--threads" || a == "-q" || a == "--quiet" || a == "--timings" || a == "--resume";
+}
+bool takes_value(const std::string& a) { return a == "--threads" || a == "--resume"; }
+
+void declare(cli::Tool& tool, Options& o) {
+  auto& app = tool.app();
+  // A resumed run repeats the checkpoint's arguments, then the ones typed: the last wins.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.add_option("inputs", o.inputs,
+                 "pore images: binary VTK STRUCTURED_POINTS (percolate -o; non-zero = fluid), raw bytes with --dims, "
+                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads a VTK image or raw bytes from stdin")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--dims", o.dims, "the inputs are raw bytes (x fastest, non-zero = fluid) of NXxNYxNZ voxels");
+  tool.add_int(app, "-M,--refine", o.refine, "lattice refinement M: each voxel becomes M^3 nodes (thesis: 3)",
+               cli::at_least(1));
+  tool.add_double(app, "--delta", o.delta, "sphere packings: voxel side [D0] (the node side is delta/M)",
+                  cli::positive());
+  tool.add_double(app, "--scale", o.scale, "sphere packings: multiply every radius by this factor (inflation)",
+                  cli::positive());
+  tool.add_double(app, "--d0", o.d0, "sphere packings: D0 [length units of the file]; 0: the file's D0=, else the "
+                                     "mean diameter (as percolate)", cli::non_negative());
+  app.add_option("--collision", o.collision, "collision model (--list-models)")->capture_default_str();
+  app.add_flag("--list-models", o.list, "print the collision models and exit");
+  tool.add_double(app, "--tau", o.tau, "relaxation time of the shear moments; viscosity (tau - 1/2)/3 [lattice units]",
+                  {0.5, std::numeric_limits<double>::infinity(), true, false});
+  tool.add_double(app, "--magic", o.magic, "TRT/MRT magic parameter Lambda (3/16: walls half-way for every tau)",
+                  cli::positive());
+  app.add_option("--axis", o.axis, "flow axis x, y or z (the others are periodic)")->capture_default_str();
+  app.add_option("--drive", o.drive, "'pressure': a density drop between inlet and outlet planes (as the thesis); "
+                                     "'force': a body force in a fully periodic box")->capture_default_str();
+  tool.add_double(app, "--density-drop", o.density_drop, "pressure drive: rho_in - rho_out [lattice units]",
+                  cli::positive());
+  tool.add_double(app, "--body-force", o.body_force, "force drive: force density along the axis [lattice units]",
+                  cli::positive());
+  app.add_option("--precision", o.precision, "storage of the populations: double or float (arithmetic in double)")
+      ->capture_default_str();
+  tool.add_double(app, "--tol", o.tol, "steady state: relative change of kappa and tau_H over --window checks",
+                  cli::positive());
+  tool.add_long(app, "--max-steps", o.max_steps, "step cap: exit 1 if not converged by then", cli::at_least(1));
+  tool.add_long(app, "--check-every", o.check_every, "steps between convergence checks", cli::at_least(1));
+  tool.add_long(app, "--window", o.window, "checks between the two values compared", cli::at_least(1));
+  app.add_option("-o,--output", o.csv, "CSV, one row per input ('-': stdout)")->capture_default_str();
+  app.add_option("--vtk", o.vtk, "velocity and density as VTK in the input's geometry (ParaView overlays it on the "
+                                 "packing); several inputs: use {name}");
+  app.add_option("--history", o.history, "CSV of kappa and tau_H at every convergence check ('-': stdout)");
+  app.add_option("--checkpoint", o.checkpoint, "save the run here every --checkpoint-every seconds and at the end "
+                                               "(atomic); one input only");
+  tool.add_double(app, "--checkpoint-every", o.checkpoint_every, "seconds between checkpoints (0: every check)",
+                  cli::non_negative());
+  app.add_option("--resume", o.resume, "continue the run saved in this checkpoint (alone: with its arguments)");
+  app.add_flag("--timings", o.timings, "add seconds and mlups (fluid-node updates per second) to the CSV");
+  tool.add_common(app, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+}
+
+void print_models() {
+  for (const auto& s : lbm::collision_styles()) std::cout << fmt::format("{:<8} {}\n", s.name, s.description);
+}
+
+struct Plan {
+  flowrun::RunPlan run;
+  std::vector<std::string> vtk_names;
+};
+
+Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& args) {
+  Plan p;
+  auto& f = p.run.flow;
+  tool.check(!o.inputs.empty(), "", "no input given (a VTK image, raw bytes with --dims, a sphere packing XYZ, or --resume)");
+  tool.check(std::count(o.inputs.begin(), o.inputs.end(), std::string("-")) <= 1, "",
+             "'-' (standard input) given more than once: it can be read only once");
+  tool.collect("--collision", [&] { lbm::collision_style(o.collision); });
+  f.collision = o.collision;
+  f.collision_parameters = {o.tau, o.magic};
+  tool.collect("--axis", [&] { f.axis = voxel::axis_from_name("--axis", o.axis); });
+  tool.check(o.drive == "pressure" || o.drive == "force", "--drive", "must be pressure or force, got '" + o.drive + "'");
+  f.driving = o.drive == "force" ? lbm::Driving::kBodyForce : lbm::Driving::kPressure;
+  f.density_drop = o.density_drop;
+  f.body_force = o.body_force;
+  tool.check(o.precision == "double" || o.precision == "float", "--precision",
+             "must be double or float, got '" + o.precision + "'");
+  f.precision = o.precision == "float" ? lbm::Precision::kFloat : lbm::Precision::kDouble;
+  if (!o.dims.empty()) tool.collect("--dims", [&] { flowrun::parse_dims(o.dims); });
+  p.run.convergence = {o.tol, o.check_every, o.window, o.max_steps};
+  p.run.checkpoint = o.checkpoint;
+  p.run.checkpoint_every = o.checkpoint_every;
+  p.run.resume = o.resume;
+  p.run.quiet = o.common.quiet;
+  tool.check(o.checkpoint.empty() || o.inputs.size() <= 1, "--checkpoint",
+             "takes one input (a checkpoint holds one run), got " + std::to_string(o.inputs.size()));
+  tool.check(o.resume.empty() || o.inputs.size() <= 1, "--resume", "continues one run; give one input or none");
+  int on_stdout = (o.csv == "-") + (o.vtk == "-") + (o.history == "-");
+  tool.check(on_stdout <= 1, "", "at most one output may go to stdout ('-'): the CSV is there by default, send the "
+                                 "others to files (or -o FILE)");
+  std::set<std::string> names;
+  for (const auto& in : o.inputs) {
+    p.vtk_names.push_back(o.vtk.empty() ? "" : cli::expand_pattern(o.vtk, "name", std::filesystem::path(in).stem().string()));
+    names.insert(p.vtk_names.back());
+  }
+  tool.check(o.vtk.empty() || names.size() == o.inputs.size(), "--vtk",
+             "must tell the inputs apart with {name} when several are given, e.g. --vtk 'flow_{name}.vtk'");
+  // What a checkpoint records: every argument but those steering only this process.
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    if (process_only(args[k])) {
+      k += takes_value(args[k]);
+      continue;
+    }
+    if (args[k].starts_with("--threads=") || args[k].starts_with("--resume=")) continue;
+    p.run.checkpoint_args.push_back(args[k]);
+  }
+  return p;
+}
+
+int run(const Options& o, const Plan& plan, const std::string& provenance) {
+  const int axis = plan.run.flow.axis;
+  const bool periodic_axis = plan.run.flow.driving == lbm::Driving::kBodyForce;
+  // Every input is read and checked first: a bad or non-percolating one stops the run
+  // before any output is written.
+  std::vector<flowrun::FlowCase> cases;
+  for (const auto& path : o.inputs) cases.push_back(flowrun::read_flow_case(path, {o.dims, o.refine, o.delta, o.scale, o.d0, axis, periodic_axis}));
+  // The outputs' temporaries appear with their first row, not while the first flow runs.
+  io::AtomicOutput csv_out(o.csv);
+  std::optional<io::CsvWriter> csv;
+  std::optional<io::AtomicOutput> history_out;
+  std::optional<io::CsvWriter> history;
+  if (!o.history.empty()) history_out.emplace(o.history);
+  std::vector<std::string> stalled;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    auto& c = cases[i];
+    flowrun::FlowOutcome out;
+    {
+      flowrun::FlowRun runner(c, plan.run);
+      out = runner.run();
+      if (!o.vtk.empty())
+        flowrun::write_flow_vtk(plan.vtk_names[i], runner.field(out),
+                                fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
+                                            "density in lattice units) | {}", c.file, c.refine, provenance));
+    }
+    c.release_lattice();
+    if (!csv) {
+      csv.emplace(csv_out.stream());
+      flowrun::write_flow_meta(*csv, provenance, plan.run.flow, plan.run.convergence);
+      csv->header(flowrun::flow_columns(o.timings));
+    }
+    csv->row(flowrun::flow_row(c, plan.run.flow, out, o.timings));
+    if (history_out) {
+      if (!history) {
+        history.emplace(history_out->stream());
+        history->meta("provenance", provenance);
+        history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
+        history->header(flowrun::history_columns());
+      }
+      for (const auto& row : flowrun::history_rows(c, out.result, plan.run.convergence.window)) history->row(row);
+    }
+    if (!o.common.quiet || o.timings) std::cerr << "lbflow: " << flowrun::flow_summary(c, out, o.timings) << '\n';
+    const auto& r = out.result.final;
+    if (r.mach > 0.1 || r.reynolds > 1)
+      std::cerr << fmt::format("lbflow: warning: {}: Mach number {:.3g} (max |u| / c_s), Reynolds number {:.3g}: the "
+                               "flow leaves the Stokes regime (keep Ma below 0.1 and Re below 1): lower --{}\n",
+                               c.file, r.mach, r.reynolds, o.drive == "force" ? "body-force" : "density-drop");
+    if (!out.result.converged) {
+      const auto& h = out.result.history;
+      const auto change = h.empty() ? std::nullopt : flowrun::relative_change(h, h.size() - 1, o.window);
+      stalled.push_back(fmt::format("{}: not converged after {} steps (--max-steps): kappa {:.6g} lu, relative change "
+                                    "{} over the last {} checks, --tol {}{}",
+                                    c.file, r.steps, r.kappa_lu, change ? fmt::format("{:.3g}", *change) : "unknown",
+                                    o.window, io::format_number(o.tol),
+                                    o.checkpoint.empty() ? "" : "; continue with lbflow --resume " + o.checkpoint +
+                                                                    " --max-steps N"));
+    }
+  }
+  csv_out.commit();
+  if (history_out) history_out->commit();
+  if (!stalled.empty()) {
+    std::string message;
+    for (const auto& s : stalled) message += (message.empty() ? "" : "\n") + s;
+    throw ComputationError(message);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::run_tool("lbflow", [&] {
+    Options o;
+    auto tool = std::make_unique<cli::Tool>(
+        "lbflow", "Stokes flow through the pore space by the D3Q19 lattice Boltzmann method (thesis 5.2.3): "
+                  "permeability and hydraulic tortuosity, one CSV row per input on stdout, a summary line per input on "
+                  "stderr (-q: none).");
+    declare(*tool, o);
+    tool->parse(argc, argv);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (o.list) {
+      print_models();
+      return 0;
+    }
+    if (!o.resume.empty() && o.inputs.empty()) {
+      // `lbflow --resume FILE [options]`: the checkpoint's arguments, then the ones typed.
+      auto stored = flowrun::read_checkpoint_args(o.resume);
+      stored.insert(stored.end(), args.begin(), args.end());
+      std::vector<char*> again{argv[0]};
+      for (auto& a : stored) again.push_back(a.data());
+      o = Options{};
+      tool = std::make_unique<cli::Tool>(tool->name(), "");
+      declare(*tool, o);
+      tool->parse(static_cast<int>(again.size()), again.data());
+      args = stored;
+    }
+    const auto plan = check(*tool, o, args);
+    tool->finish_checks();
+    cli::apply_threads(o.common);
+    return run(o, plan, cli::provenance("lbflow", argc, argv));
+  });
+}
