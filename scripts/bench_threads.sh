@@ -10,6 +10,7 @@ repeat=${BENCH_REPEAT:-2}
 bin="$build/bin"
 "$bench/bench_fit" data >"$work/kc.csv"
 "$bin/shellpack" jam -N 50 --seed 1 -q -o "$work/jam.xyz" --csv /dev/null
+"$bin/percolate" "$work/jam.xyz" --delta 0.04 -q -o "$work/cluster.vtk" --csv /dev/null
 
 # name|what it runs|command ({T}: the thread count)
 cases=(
@@ -18,6 +19,8 @@ cases=(
   "percolate_labelling|percolate labelling: 256^3 random image, porosity 0.35|$bench/bench_voxel label 256 0.35 {T}"
   "percolate_cli|percolate on a jammed packing of 50 spheres, --scale 1.1 --delta 0.01|$bin/percolate $work/jam.xyz --scale 1.1 --delta 0.01 --threads {T} -q --csv /dev/null"
   "rndmesh_seeds|rndmesh random -n 300 --seeds 1:4|$bin/rndmesh random -n 300 --seeds 1:4 --threads {T} -q -o $work/m_{seed}.off"
+  "lbflow_cluster|lbflow on the cluster of a jammed packing of 50 spheres, delta 0.04, M = 1, 1500 steps|$bin/lbflow $work/cluster.vtk --refine 1 --max-steps 1500 --threads {T} -q -o /dev/null || true"
+  "jam2d_sweep|jam2d sweep --box 8 --seeds 1:4 (jamming, 4 colonies)|$bin/jam2d sweep --box 8 --seeds 1:4 --threads {T} -q > /dev/null"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )
 

@@ -1,0 +1,19 @@
+"""Rows of the README benchmark table for lbflow's kernel (scripts/bench_lbflow.sh)."""
+
+
+def _speed(r):
+    what = "dense 128^3, body force" if r["case"] == "dense" else f"porous 128^3 box, porosity {float(r['porosity']):.2f}, pressure planes"
+    return (f"lbflow kernel: D3Q19 {r['collision'].upper()}, double, {r['threads']} thread(s)", what,
+            f"{float(r['mlups']):.1f} MLUPS = {float(r['fraction_of_bound']):.2f} of the triad bound "
+            f"({float(r['triad_gbs']):.1f} GB/s -> {float(r['bound_mlups']):.0f} MLUPS); {float(r['bytes_per_node']):.0f} B/fluid node",
+            "Palabos MRT ~10 MLUPS per core here; goal >= 1/2 of the bound on 2 cores")
+
+
+def _sphere(r):
+    return ("lbflow kernel: simple cubic sphere array, MRT, body force",
+            f"solid fraction {float(r['solid_fraction']):.3f}, {r['N']} nodes per cell (radius {float(r['radius']):.1f})",
+            f"kappa error {100 * float(r['err_halfway']):+.1f} % (half-way walls), {100 * float(r['err_interpolated']):+.1f} % (interpolated), {r['steps']} steps",
+            f"Zick & Homsy K = {r['K_zick_homsy']}")
+
+
+SECTIONS = {"lbflow_kernel.csv": _speed, "lbflow_sphere_array.csv": _sphere}
