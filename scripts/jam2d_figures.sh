@@ -30,6 +30,8 @@ done
 if [ "$s33" -gt 0 ]; then
   echo "== jam2d sweep --box 15 --seeds 1:$s33 --dphi $dphis --P0 inf" >&2
   "$jam2d" sweep --box 15 --seeds "1:$s33" --dphi "$dphis" --P0 inf -q >"$out/jam2d_sweep15_fig3_3.csv"
+else
+  rm -f "$out/jam2d_sweep15_fig3_3.csv"  # not an earlier run's
 fi
 for P0 in inf 0.005 0.001; do
   echo "== jam2d grow --box 15 --seed 1 --dphi 0.16 --P0 $P0" >&2
