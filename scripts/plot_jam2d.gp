@@ -25,17 +25,32 @@ set key right top
 plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:5 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
      0.25 dt 2 lc rgb "#888888" title "thesis: f_u ≈ 0.25 at jamming"
 
-# Fig. 3.3: Z - Z_J and G against P, with the thesis's P^{1/2}.
+# Fig. 3.3: Z - Z_J and G against P, with the thesis's P^{1/2}; with FIG33_SEEDS, also the
+# no-feedback means at L = 15 sigma (black, bars: s.d. over seeds).
 set output dir."/jam2d_fig3_3.png"
+L15 = dir."/jam2d_fig3_3_L15.dat"
+has15 = system("test -f '".L15."' && echo 1 || echo 0") + 0
 set multiplot layout 1,2
 set logscale xy
 set key left top
 set ylabel "Z - Z_J"
-plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:3 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
-     20 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+if (has15) {
+  plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:3 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
+       L15 using 2:3:5 with yerrorlines pt 5 lw 2 lc rgb "black" title "no feedback, L = 15 {/Symbol s}", \
+       20 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+} else {
+  plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:3 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
+       20 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+}
 set ylabel "G [k]"
-plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:4 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
-     1.5 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+if (has15) {
+  plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:4 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
+       L15 using 2:4 with linespoints pt 5 lw 2 lc rgb "black" title "no feedback, L = 15 {/Symbol s}", \
+       1.5 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+} else {
+  plot for [i=1:3] dir."/jam2d_fig3_3_P0_".word(P0s, i).".dat" using 2:4 with linespoints pt 7 lw 2 lc rgb word(cols, i) title name(i), \
+       1.5 * sqrt(x) dt 2 lc rgb "#888888" title "thesis: ∝ P^{1/2}"
+}
 unset multiplot
 
 # Fig. S3.2: Z_J + 2/(N - N_r) against f_u, one point per packing, and Z_iso = 6 - 2 f_u.

@@ -79,6 +79,22 @@ case_sweep_same_on_one_and_two_threads() {
   [ "$(grep -vc '^#' one.csv)" -eq 17 ] || fail "one row per seed, P0 and dphi (+ header)"
 }
 
+# Fig. 3.3 in miniature: without feedback the seed means of Z - Z_J and G rise with P, as a power
+# between 0.3 and 0.8 from dphi = 0.01 to 0.1 (4 packings of 8 sigma; the README's fit at 15 sigma
+# over 100 packings gives 1/2 within 0.1). Catches G or Z - Z_J constant or linear in P.
+case_sweep_dZ_and_G_rise_about_as_sqrt_P() {
+  "$jam2d" sweep --box 8 --seeds 1:4 --dphi 0,0.01,0.1 --P0 inf -q >s.csv || fail "sweep"
+  head -7 s.csv | grep -q '^seed,P0,dphi,phi_J,cells,box,phi,pressure,.*,B,G,Z,' || fail "columns moved: $(grep ^seed s.csv)"
+  local slopes
+  slopes=$(awk -F, '/^#/ || $1 == "seed" { next }
+    $3 == 0 { zj[$1] = $14; next }
+    { k = ($3 < 0.05) ? 1 : 2; P[k] += $8; dZ[k] += $14 - zj[$1]; G[k] += $13 }
+    END { if (P[1] > 0 && dZ[1] > 0 && G[1] > 0 && P[2] > P[1]) { l = log(P[2] / P[1]); print log(dZ[2] / dZ[1]) / l, log(G[2] / G[1]) / l } }' s.csv)
+  [ -n "$slopes" ] || fail "non-positive means at dphi = 0.01 or P not rising"
+  echo "$slopes" | awk '{ exit !($1 >= 0.3 && $1 <= 0.8 && $2 >= 0.3 && $2 <= 0.8) }' ||
+    fail "log-log slopes of Z - Z_J and G against P: $slopes (expected 0.3-0.8)"
+}
+
 case_bad_packing_lobe_missing() {
   good_packing | sed '5d; 1s/4/3/' >p.xyz
   expect_error 2 "p.xyz:5: cell 1 has a bud row but no mother row" "$jam2d" moduli p.xyz -o out.csv
