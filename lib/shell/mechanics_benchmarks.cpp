@@ -18,7 +18,6 @@ void write_sphere(bool quick, std::ostream& out, const std::string& provenance,
                   const std::function<void(const std::string&)>& note) {
   SphereInflationCase c;
   if (quick) {
-    c.level = 3;
     c.loads = {1e-4, 1e-3, 1e-2};
   } else {
     c.loads = {1e-4, 2e-4, 5e-4, 1e-3, 1.5e-3, 2e-3, 3e-3, 4e-3, 5e-3, 6e-3, 7e-3, 8e-3, 9e-3, 1e-2};

@@ -89,7 +89,16 @@ ShellRunResult run_shell(const mesh::TriMesh& rest, const ShellRunOptions& o,
                              "this mesh and model can hold)");
     result.rows.push_back(std::move(row));
   };
-  const auto relax_now = [&] { return relax(s, rp, progress); };
+  // Checked every few hundred FIRE iterations too: a load that turns elements inside out
+  // may never converge, and the run should say so at once rather than at the iteration cap.
+  const RelaxProgress watch = [&](long iterations, double residual) {
+    if (const long folded = folded_hinges(s, s.x); folded > 0)
+      throw ComputationError("step " + std::to_string(step) + " (Pi = " + io::format_number(s.pressure()->turgor()) +
+                             "): " + std::to_string(folded) + " hinges folded over after " + std::to_string(iterations) +
+                             " FIRE iterations: the load inverts elements of the mesh");
+    return !progress || progress(iterations, residual);
+  };
+  const auto relax_now = [&] { return relax(s, rp, watch); };
   for (int k = 1; k <= o.pressure_steps; ++k) {
     const double pi = o.pressure * k / o.pressure_steps;
     s.pressure()->set_turgor(pi);
@@ -99,7 +108,7 @@ ShellRunResult run_shell(const mesh::TriMesh& rest, const ShellRunOptions& o,
       RelaxParameters fixed = rp;
       fixed.max_volume_updates = 0;
       fixed.volume_tolerance = std::numeric_limits<double>::infinity();
-      rr = relax(s, fixed, progress);
+      rr = relax(s, fixed, watch);
     } else {
       rr = relax_now();
     }

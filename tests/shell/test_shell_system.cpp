@@ -64,14 +64,14 @@ TEST_CASE("Heun's over-damped dynamics reaches FIRE's equilibrium", "[shell][sys
   const auto rest = sphere(3);
   ShellSystem a = make_shell_system(rest, membrane("turgor", 0.05));
   ShellSystem b = make_shell_system(rest, membrane("turgor", 0.05));
-  const auto pa = relax_parameters(rest, 1e-8);
+  const auto pa = relax_parameters(rest, 1e-7);
   REQUIRE(relax(a, pa).converged());
   // The thesis's step for its B.5 runs (E in MPa, lengths in m or um, mu = 1): dt = 0.0005.
-  const auto h = heun_relax(b, 0.0005, 1.0, 1e-8, pa.force_scale, 200000);
+  const auto h = heun_relax(b, 0.0005, 1.0, 1e-7, pa.force_scale, 200000);
   INFO("heun steps " << h.steps << " residual " << h.residual);
   CHECK(h.converged);
   const double va = a.pressure()->volumes(span_of(a.x)).front(), vb = b.pressure()->volumes(span_of(b.x)).front();
-  CHECK(vb == Approx(va).epsilon(1e-6));
+  CHECK(vb == Approx(va).epsilon(1e-5));
 }
 
 TEST_CASE("a shell squeezed between two walls: equal and opposite wall forces, a flat contact", "[shell][system][walls]") {

@@ -8,7 +8,7 @@
 
 using namespace cmp::shell;
 
-TEST_CASE("an inflated SVK sphere follows the corrected large-strain relation; springs only at small strain",
+TEST_CASE("an inflated SVK sphere follows the corrected large-strain relation, springs only at small strain",
           "[shell][physics][sphere]") {
   SphereInflationCase c;
   c.level = 4;  // 642 vertices, the thesis's mesh

@@ -79,7 +79,6 @@ void check_shell(cli::Tool& tool, Options& o) {
   if (m.bending == "none") m.bending.clear();
   if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
   tool.collect("--pressure-model", [&] { shell::pressure_style(m.pressure); });
-  tool.collect("--nu", [&] { shell::validate(m.material, "material"); });
   m.contact.vertex_radius = o.vertex_radius > 0 ? o.vertex_radius : m.material.thickness;
   m.contact.youngs_modulus = m.material.youngs_modulus;
   m.contact.poisson_ratio = m.material.poisson_ratio;
@@ -328,7 +327,8 @@ int main(int argc, char** argv) {
         ->default_str("turgor");
     tool.add_double(*sh, "-E,--youngs-modulus", model.material.youngs_modulus, "Young's modulus E [P: any pressure unit]",
                     cli::positive());
-    tool.add_double(*sh, "--nu,--poisson-ratio", model.material.poisson_ratio, "Poisson's ratio nu, in (-1, 0.5]");
+    tool.add_double(*sh, "--nu,--poisson-ratio", model.material.poisson_ratio, "Poisson's ratio nu",
+                    cli::left_open(-1, 0.5));
     tool.add_double(*sh, "-t,--thickness", model.material.thickness, "wall thickness t [u: the mesh's length unit]",
                     cli::positive());
     tool.add_double(*sh, "--pressure", run.pressure, "turgor Pi to inflate to [P]");
