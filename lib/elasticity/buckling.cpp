@@ -12,7 +12,6 @@ void positive(double x, const char* what) {
 double factor(HingeCalibration c) {
   switch (c) {
     case HingeCalibration::Cylinder: return std::sqrt(3.0) / 2.0;
-    case HingeCalibration::Isotropic: return 1.0 / std::sqrt(3.0);
     case HingeCalibration::Sphere: return 1.0 / (2.0 * std::sqrt(3.0));
   }
   throw std::domain_error("unknown hinge calibration");
@@ -52,6 +51,11 @@ double spring_constant(double Y) { return std::sqrt(3.0) * Y / 2.0; }
 double hinge_bending_rigidity(double kt, HingeCalibration c) {
   positive(kt, "kappa~");
   return factor(c) * kt;
+}
+
+double hinge_gaussian_modulus(double kt) {
+  positive(kt, "kappa~");
+  return -2.0 / std::sqrt(3.0) * kt;
 }
 
 double hinge_constant(double kappa, HingeCalibration c) {

@@ -13,21 +13,18 @@
 //  * harmonic springs of constant k (energy k/2 (l - l0)^2 per edge) make a sheet with
 //    Y = 2 k/sqrt(3) and nu = 1/3 (Seung-Nelson; the springs-seung-nelson style of lib/shell
 //    sets k = sqrt(3) E t/2);
-//  * normal-vector springs kappa~ sum (1 - n_a . n_b) over the hinges (B.35) have no single
-//    continuum kappa: the value depends on the geometry it is measured on.
-//      Cylinder:  kappa = (sqrt(3)/2) kappa~ (B.36, Seung-Nelson; Paulose et al. use it with
-//                 Y = 2k/sqrt(3)); lib/shell's hinge-uniform style sets kappa~ = 2 kappa/sqrt(3)
-//                 and its test measures it on a cylinder inscribed with rows of equilateral
-//                 triangles along the axis (whose zig-zag tilt adds to the bending).
-//      Isotropic: kappa = kappa~/sqrt(3), the continuum limit of the hinge angles (centroid
-//                 distance a/sqrt(3), averaged over the three edge directions): the energy
-//                 density is (kappa~/(2 sqrt(3)))(c1^2 + c2^2), i.e. Helfrich's (kappa/2)(c1+c2)^2
-//                 with kappa = kappa~/sqrt(3) and a Gaussian modulus -kappa.
-//      Sphere:    kappa = kappa~/(2 sqrt(3)), the value for which a triangulated sphere stores
-//                 the continuum energy 8 pi kappa (the Isotropic density integrated over a sphere).
-//    lib/shell's default hinge style (hinge, kappa_e = 3 |e|^2 kappa/A_e = 2 sqrt(3) kappa on
-//    equilateral triangles) is calibrated the Sphere way: it stores 8 pi kappa on icosahedral
-//    spheres within 2 %, so in the Isotropic sense its bending rigidity is 2 kappa.
+//  * normal-vector springs kappa~ sum (1 - n_a . n_b) over the hinges (B.35) on a sheet of
+//    equilateral triangles bent with its vertices on a smooth surface store, per area,
+//      (kappa/2)(c1 + c2)^2 + kappa_G c1 c2,  kappa = (sqrt(3)/2) kappa~,  kappa_G = -(2/sqrt(3)) kappa~
+//    (measured in tests/elasticity/test_hinge_calibration.cpp on a flat disc mapped onto
+//    cylinders of both orientations, a sphere and a saddle). So the mechanical bending rigidity
+//    is the Cylinder calibration of B.36 (Seung-Nelson; Paulose et al. use it with Y = 2k/sqrt(3)),
+//    and lib/shell's hinge-uniform style, which sets kappa~ = 2 kappa/sqrt(3), bends like kappa.
+//    A closed sphere stores 8 pi kappa~/(2 sqrt(3)) (the Gaussian term adds a constant): the
+//    Sphere calibration, kappa = kappa~/(2 sqrt(3)), reproduces the sphere's total energy only.
+//    lib/shell's default hinge style (kappa_e = 3 |e|^2 kappa/A_e = 2 sqrt(3) kappa on
+//    equilateral triangles) is calibrated the Sphere way (it stores 8 pi kappa on icosahedral
+//    spheres): its mechanical bending rigidity is 3 kappa.
 #include "elasticity/sheet.hpp"
 
 namespace cmp::elasticity {
@@ -49,12 +46,13 @@ double spring_constant(double stretching_modulus);
 
 // How a hinge constant kappa~ of normal-vector springs maps to a continuum kappa.
 enum class HingeCalibration {
-  Cylinder,   // kappa = (sqrt(3)/2) kappa~
-  Isotropic,  // kappa = kappa~/sqrt(3)
-  Sphere,     // kappa = kappa~/(2 sqrt(3))
+  Cylinder,  // kappa = (sqrt(3)/2) kappa~: the bending rigidity (mechanics)
+  Sphere,    // kappa = kappa~/(2 sqrt(3)): a closed sphere's total energy 8 pi kappa
 };
 // kappa from kappa~ and back (kappa~ > 0; throws std::domain_error otherwise).
 double hinge_bending_rigidity(double hinge_constant, HingeCalibration calibration);
 double hinge_constant(double bending_rigidity, HingeCalibration calibration);
+// The Gaussian modulus of normal-vector hinges, kappa_G = -(2/sqrt(3)) kappa~.
+double hinge_gaussian_modulus(double hinge_constant);
 
 }  // namespace cmp::elasticity

@@ -33,11 +33,10 @@ TEST_CASE("spring and hinge calibrations round-trip", "[elasticity][buckling]") 
   CHECK(spring_stretching_modulus(spring_constant(3.0)) == Approx(3.0).epsilon(1e-15));
   CHECK(spring_constant(2.0 / std::sqrt(3.0)) == Approx(1.0).epsilon(1e-15));
   CHECK(hinge_bending_rigidity(1.0, HingeCalibration::Cylinder) == Approx(std::sqrt(3.0) / 2).epsilon(1e-15));
-  CHECK(hinge_bending_rigidity(1.0, HingeCalibration::Isotropic) == Approx(1 / std::sqrt(3.0)).epsilon(1e-15));
   CHECK(hinge_bending_rigidity(1.0, HingeCalibration::Sphere) == Approx(1 / (2 * std::sqrt(3.0))).epsilon(1e-15));
   // lib/shell's hinge-uniform stiffness 2 kappa/sqrt(3) is the Cylinder calibration.
   CHECK(hinge_constant(1.0, HingeCalibration::Cylinder) == Approx(2 / std::sqrt(3.0)).epsilon(1e-15));
-  for (auto c : {HingeCalibration::Cylinder, HingeCalibration::Isotropic, HingeCalibration::Sphere})
+  for (auto c : {HingeCalibration::Cylinder, HingeCalibration::Sphere})
     CHECK(hinge_bending_rigidity(hinge_constant(0.7, c), c) == Approx(0.7).epsilon(1e-15));
 }
 

@@ -81,6 +81,17 @@ TEST_CASE("constant-volume compression of Fig. B.9: balance, volume and virtual 
   CHECK(slope(r[6], r[7]) > 2.0);
 }
 
+TEST_CASE("at vanishing compression the force is linear up to a logarithm, not Hertzian", "[elasticity][membrane]") {
+  // A tense membrane indented over a small contact: F ~ 4 pi T delta / ln(1/X) (delta = X R_i,
+  // T the inflated tension), so the local exponent falls slowly towards 1 (1.10 at X = 1e-5).
+  const InflatedMembrane m(fig_b9, 1.0, P_i);
+  const auto r = m.sweep({1e-5, 1.1e-5}, Fill::ConstantVolume);
+  CHECK(slope(r[0], r[1]) == Approx(1.10).margin(0.02));
+  const double T = sphere_tension(fig_b9, m.inflated_stretch());
+  const double delta = r[0].compression * m.inflated_radius();
+  CHECK(r[0].force * std::log(1 / r[0].compression) / (4 * M_PI * T * delta) == Approx(1.0).margin(0.1));
+}
+
 TEST_CASE("constant-pressure compression keeps P and loses volume until the meridian goes slack",
           "[elasticity][membrane]") {
   const InflatedMembrane m(fig_b9, 1.0, P_i);
