@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "core/parallel_for.hpp"
 #include "io/atomic_output.hpp"
+#include "elasticity/benchmark_curves.hpp"
 #include "io/off.hpp"
 #include "io/xyz.hpp"
 #include "shell/mechanics_benchmarks.hpp"
@@ -56,7 +57,7 @@ struct Options {
   bool list_models = false;
   // bench-mechanics
   std::string bench_case;
-  bool bench_full = false;
+  bool bench_full = false, bench_analytic = false;
 };
 
 // --list-models: every registered style of every kind, from the tables the options read.
@@ -124,6 +125,11 @@ void run_shell_command(const Options& o, const std::string& provenance) {
 
 void run_bench_mechanics(const Options& o, const std::string& provenance) {
   io::AtomicOutput out(o.output);
+  if (o.bench_analytic) {
+    elasticity::write_csv(out.stream(), elasticity::analytic_curve(o.bench_case));
+    out.commit();
+    return;
+  }
   shell::run_mechanics_benchmark(o.bench_case, !o.bench_full, out.stream(), provenance,
                                  [&](const std::string& note) {
                                    if (!o.common.quiet) std::cerr << "shellpack: " << note << "\n";
@@ -352,6 +358,7 @@ int main(int argc, char** argv) {
     auto* bench = app->add_subcommand("bench-mechanics", "an Appendix B benchmark as CSV, computed beside the analytic curve");
     bench->add_option("case", o.bench_case, "sphere, poisson, plate-point, plate-uniform, plate-large, plates-contact or buckling")
         ->required();
+    bench->add_flag("--analytic", o.bench_analytic, "write the analytic reference curve of the case instead (lib/elasticity)");
     bench->add_flag("--full", o.bench_full, "the thesis's mesh sizes and every load (slower; the figures)");
     bench->add_option("-o,--output", o.output, "CSV ('-': stdout)");
     tool.add_common(*bench, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
