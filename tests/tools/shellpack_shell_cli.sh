@@ -120,7 +120,7 @@ case_bench_unknown() {
 }
 case_bench_sphere() {
   "$shellpack" bench-mechanics sphere -q >sphere.csv || fail "sphere"
-  grep -q "^model,load_E,eps_r,eps_r_svk," sphere.csv || fail "header"
+  grep -q "^model,dP_E,eps_r,eps_r_svk," sphere.csv || fail "header"
   awk -F, '!/^#/ && $1 == "svk" { e = $7; if (e < 0) e = -e; if (e > 0.01) exit 1 }' sphere.csv || fail "svk off: $(cat sphere.csv)"
 }
 
