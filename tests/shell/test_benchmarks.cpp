@@ -58,7 +58,7 @@ TEST_CASE("clamped plate, linear regime: the calibrated hinges follow plate theo
   CHECK(um > 3);
 }
 
-TEST_CASE("clamped plate, large deflection: B.88/B.89 from bending to membrane regime; a membrane only at large load",
+TEST_CASE("clamped plate, large deflection: B.88/B.89 from bending to membrane regime, a membrane only at large load",
           "[shell][physics][plate]") {
   PlateCase c;
   c.radius = 2.14;
