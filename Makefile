@@ -10,7 +10,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure run install clean clean-results
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure shell-figures run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -70,6 +70,10 @@ tables: deps all
 # Figs S5.1/S5.2: phi_J and Z of 100 jammed packings per N against the thesis ($(OUT)/figures/).
 jamming-figure: deps all
 	@scripts/jamming_figure.sh $(BUILD) $(OUT)/figures
+
+# Figs B.4-B.9: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
+shell-figures: deps all
+	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
 
 # Fig. 5.2C-D's trend on jammed spheres: shellpack jam -> percolate -> kcfit ($(OUT)/figures/).
 percolation-figure: deps all

@@ -1,5 +1,10 @@
 #pragma once
 // Typed parameters of the shell styles, checked once when a style is built.
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
 namespace cmp::shell {
 
 // An isotropic elastic sheet (stretching and bending styles).
@@ -26,5 +31,40 @@ struct PressureParameters {
 
 // Throws cmp::UsageError when Pi is not finite.
 void validate(const PressureParameters& p, const char* style);
+
+// A rigid plane x . normal = point . normal; the shells live on the side the unit normal
+// points to.
+struct Plane {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  // Signed distance of p from the plane, positive on the shells' side.
+  double distance(const double* p) const {
+    return (p[0] - point[0]) * normal[0] + (p[1] - point[1]) * normal[1] + (p[2] - point[2]) * normal[2];
+  }
+};
+
+// Hertz contacts of the vertices (thesis B.2.5, Eq. B.60): every vertex is a sphere of radius
+// R_v. Between vertices of different shells E* = E / (2 (1 - nu^2)), R* = R_v / 2,
+// h = 2 R_v - r; against a wall R* = R_v, 1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w,
+// h = R_v - (distance to the plane). Energy (8/15) E* sqrt(R*) h^(5/2) per contact, whose
+// force (4/3) E* sqrt(R*) h^(3/2) is B.60's, repulsive.
+struct ContactParameters {
+  double vertex_radius = 0.1;     // R_v [length], > 0 (the thesis takes the wall thickness t)
+  double youngs_modulus = 1.0;    // E of the vertex spheres [pressure], > 0
+  double poisson_ratio = 0.5;     // nu of the vertex spheres, in (-1, 0.5]
+  double wall_modulus = std::numeric_limits<double>::infinity();  // E_w, > 0; infinity: rigid
+  double wall_poisson_ratio = 0.5;  // nu_w, in (-1, 0.5]
+  std::vector<Plane> walls;       // unit normals
+
+  double vertex_effective_modulus() const { return youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio)); }
+  double wall_effective_modulus() const {
+    return 1.0 / ((1.0 - poisson_ratio * poisson_ratio) / youngs_modulus +
+                  (1.0 - wall_poisson_ratio * wall_poisson_ratio) / wall_modulus);
+  }
+};
+
+// Throws cmp::UsageError naming the first bad value (R_v, moduli, Poisson ratios, a wall
+// normal that is not a finite unit vector or a non-finite wall point).
+void validate(const ContactParameters& p, const char* style);
 
 }  // namespace cmp::shell

@@ -2,6 +2,7 @@
 
 #include "shell/dihedral_hinges.hpp"
 #include "shell/edge_springs.hpp"
+#include "shell/hertz_contacts.hpp"
 #include "shell/svk_membrane.hpp"
 #include "shell/turgor_pressure.hpp"
 
@@ -49,6 +50,21 @@ const PressureStyle kPressure[] = {
      [](const mesh::TriMesh& r, const PressureParameters& p) -> std::unique_ptr<EnergyTerm> {
        return std::make_unique<TurgorPressure>(r, p);
      }},
+    {"volume", "constant volume: Pi updated between relaxations, Pi <- Pi (1 + (V0 - V)/V), until |V - V0| <= 0.1 % V0 (5.2.1)",
+     [](const mesh::TriMesh& r, const PressureParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<TurgorPressure>(r, p, PressureControl::ConstantVolume);
+     }},
+};
+
+const ContactStyle kContact[] = {
+    {"hertz-vertices", "Hertz repulsion of vertex spheres (radius R_v) of different shells, over linked cells (B.60)",
+     [](const mesh::TriMesh& r, const ContactParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<VertexContacts>(r, p);
+     }},
+    {"hertz-walls", "Hertz repulsion of vertex spheres (radius R_v) from rigid planes (B.60 with R* = R_v)",
+     [](const mesh::TriMesh& r, const ContactParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<WallContacts>(r, p);
+     }},
 };
 
 template <class S>
@@ -66,9 +82,11 @@ const S& find(std::span<const S> table, const std::string& name, const char* kin
 std::span<const StretchingStyle> stretching_styles() { return kStretching; }
 std::span<const BendingStyle> bending_styles() { return kBending; }
 std::span<const PressureStyle> pressure_styles() { return kPressure; }
+std::span<const ContactStyle> contact_styles() { return kContact; }
 
 const StretchingStyle& stretching_style(const std::string& name) { return find(stretching_styles(), name, "stretching"); }
 const BendingStyle& bending_style(const std::string& name) { return find(bending_styles(), name, "bending"); }
 const PressureStyle& pressure_style(const std::string& name) { return find(pressure_styles(), name, "pressure"); }
+const ContactStyle& contact_style(const std::string& name) { return find(contact_styles(), name, "contact"); }
 
 }  // namespace cmp::shell

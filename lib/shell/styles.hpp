@@ -25,14 +25,17 @@ struct Style {
 using StretchingStyle = Style<MaterialParameters>;
 using BendingStyle = Style<MaterialParameters>;
 using PressureStyle = Style<PressureParameters>;
+using ContactStyle = Style<ContactParameters>;
 
 std::span<const StretchingStyle> stretching_styles();
 std::span<const BendingStyle> bending_styles();
 std::span<const PressureStyle> pressure_styles();
+std::span<const ContactStyle> contact_styles();
 
 // The entry called `name`; throws cmp::UsageError "unknown <kind> model 'x' (known: a, b)".
 const StretchingStyle& stretching_style(const std::string& name);
 const BendingStyle& bending_style(const std::string& name);
 const PressureStyle& pressure_style(const std::string& name);
+const ContactStyle& contact_style(const std::string& name);
 
 }  // namespace cmp::shell

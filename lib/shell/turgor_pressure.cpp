@@ -1,60 +1,83 @@
 #include "shell/turgor_pressure.hpp"
 
+#include "shell/shell_partition.hpp"
+
 #include "core/errors.hpp"
 #include "mesh/manifold.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace cmp::shell {
+
+namespace {
+inline double triple(const double* a, const double* b, const double* c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+}  // namespace
 
 double signed_volume(std::span<const double> x, const std::vector<int>& corners) {
   const double* X = x.data();
   const std::size_t nf = corners.size() / 3;
   double sum = 0;
-  for (std::size_t f = 0; f < nf; ++f) {
-    const double* a = X + 3 * corners[3 * f];
-    const double* b = X + 3 * corners[3 * f + 1];
-    const double* c = X + 3 * corners[3 * f + 2];
-    sum += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-  }
+  for (std::size_t f = 0; f < nf; ++f)
+    sum += triple(X + 3 * corners[3 * f], X + 3 * corners[3 * f + 1], X + 3 * corners[3 * f + 2]);
   return sum / 6.0;
 }
 
-TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParameters& p)
-    : turgor_(p.turgor), vertex_count_(rest.V.rows()) {
-  validate(p, "turgor");
+TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParameters& p, PressureControl control)
+    : control_(control), vertex_count_(rest.V.rows()) {
+  const std::string style = name();
+  validate(p, style.c_str());
   corners_.resize(3 * rest.F.rows());
   for (Eigen::Index f = 0; f < rest.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int v = rest.F(f, k);
       if (v < 0 || v >= rest.V.rows())
-        throw UsageError("turgor: face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+        throw UsageError(style + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                          " of a mesh with " + std::to_string(rest.V.rows()) + " vertices");
       corners_[3 * f + k] = v;
     }
   const auto report = mesh::manifold_report(rest.F, static_cast<int>(rest.V.rows()));
   if (!report.closed_manifold() || !report.consistently_oriented())
-    throw UsageError("turgor: the mesh must be closed and consistently oriented to enclose a volume (" +
+    throw UsageError(style + ": the mesh must be closed and consistently oriented to enclose a volume (" +
                      report.describe() + ")");
-  const double v = signed_volume(std::span<const double>(rest.V.data(), rest.V.size()), corners_);
-  if (!(v > 0))
-    throw UsageError("turgor: the faces are oriented inward (signed volume " + std::to_string(v) +
-                     " <= 0); orient them outward");
+  const auto shells = shell_partition(rest.F, static_cast<int>(rest.V.rows()));
+  face_shell_ = shells.face_shell;
+  turgor_.assign(static_cast<std::size_t>(std::max(shells.shell_count, 1)), p.turgor);
+  target_ = volumes(std::span<const double>(rest.V.data(), rest.V.size()));
+  for (std::size_t s = 0; s < target_.size(); ++s)
+    if (!(target_[s] > 0))
+      throw UsageError(style + ": the faces are oriented inward (shell " + std::to_string(s) + ": signed volume " +
+                       std::to_string(target_[s]) + " <= 0); orient them outward");
+}
+
+std::vector<double> TurgorPressure::volumes(std::span<const double> x) const {
+  const double* X = x.data();
+  std::vector<double> v(turgor_.size(), 0.0);
+  const std::size_t nf = face_shell_.size();
+  for (std::size_t f = 0; f < nf; ++f)
+    v[face_shell_[f]] += triple(X + 3 * corners_[3 * f], X + 3 * corners_[3 * f + 1], X + 3 * corners_[3 * f + 2]);
+  for (double& s : v) s /= 6.0;
+  return v;
 }
 
 double TurgorPressure::energy(std::span<const double> x) const {
   check_sizes(x);
-  return -turgor_ * signed_volume(x, corners_);
+  const auto v = volumes(x);
+  double e = 0;
+  for (std::size_t s = 0; s < v.size(); ++s) e -= turgor_[s] * v[s];
+  return e;
 }
 
 void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   const double* X = x.data();
   double* G = g.data();
-  const double s = -turgor_ / 6.0;
-  const std::size_t nf = corners_.size() / 3;
+  const std::size_t nf = face_shell_.size();
   for (std::size_t f = 0; f < nf; ++f) {
     const int* q = &corners_[3 * f];
+    const double s = -turgor_[face_shell_[f]] / 6.0;
     for (int i = 0; i < 3; ++i) {  // dV/dx_a = (b x c)/6, cyclic
       const double* b = X + 3 * q[(i + 1) % 3];
       const double* c = X + 3 * q[(i + 2) % 3];
@@ -64,6 +87,40 @@ void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g
       ga[2] += s * (b[0] * c[1] - b[1] * c[0]);
     }
   }
+}
+
+void TurgorPressure::set_turgor(double pi) {
+  validate(PressureParameters{pi}, name().c_str());
+  for (double& t : turgor_) t = pi;
+}
+
+void TurgorPressure::set_turgors(const std::vector<double>& pi) {
+  if (pi.size() != turgor_.size())
+    throw std::invalid_argument(name() + ": " + std::to_string(pi.size()) + " pressures for " +
+                                std::to_string(turgor_.size()) + " shells");
+  for (double t : pi) validate(PressureParameters{t}, name().c_str());
+  turgor_ = pi;
+}
+
+void TurgorPressure::set_target_volumes(const std::vector<double>& v0) {
+  if (v0.size() != target_.size())
+    throw std::invalid_argument(name() + ": " + std::to_string(v0.size()) + " target volumes for " +
+                                std::to_string(target_.size()) + " shells");
+  for (double v : v0)
+    if (!(v > 0 && std::isfinite(v))) throw UsageError(name() + ": a target volume must be positive and finite");
+  target_ = v0;
+}
+
+double TurgorPressure::volume_error(std::span<const double> x) const {
+  const auto v = volumes(x);
+  double worst = 0;
+  for (std::size_t s = 0; s < v.size(); ++s) worst = std::max(worst, std::abs(v[s] - target_[s]) / target_[s]);
+  return worst;
+}
+
+void TurgorPressure::update_turgor_towards_targets(std::span<const double> x) {
+  const auto v = volumes(x);
+  for (std::size_t s = 0; s < v.size(); ++s) turgor_[s] *= 1.0 + (target_[s] - v[s]) / v[s];
 }
 
 }  // namespace cmp::shell

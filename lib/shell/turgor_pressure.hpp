@@ -1,11 +1,21 @@
 #pragma once
-// A constant turgor pressure Pi inside a closed, outward-oriented triangle mesh (thesis B.2.4,
-// pressure force II at constant Pi): E = -Pi V, V the signed enclosed volume
-//   V = sum over faces (a, b, c) of a . (b x c) / 6
+// Turgor pressure inside closed, outward-oriented shells (thesis B.2.4, pressure force II):
+// E = -sum_s Pi_s V_s over the shells s of the mesh (its connected components, see
+// shell_partition.hpp), V_s the signed volume enclosed by shell s,
+//   V = sum over its faces (a, b, c) of a . (b x c) / 6
 // (the tetrahedra on every face and a common apex; the apex drops out of the total for a
 // closed mesh, so the origin serves). The force -dE/dx_a = Pi sum_faces (b x c)/6 points
 // outward for Pi > 0: the shell inflates (the minus sign printed in B.50-B.53 would deflate
 // it). The signed volume is used, not B.54's absolute value, which has no useful gradient.
+//
+// Two controls, two registered styles with the same energy:
+//   "turgor": Pi fixed (the load of the B.5 and B.7 benchmarks);
+//   "volume": a constant volume, an incompressible fill (5.2.1, B.6). During one relaxation
+//     Pi is fixed; between relaxations the driver (relax.hpp) applies
+//     Pi_s <- Pi_s (1 + (V0_s - V_s)/V_s) until every |V_s - V0_s| <= 0.1 % V0_s. The targets
+//     V0_s default to the rest volumes; a driver that inflates first sets them to the
+//     inflated ones. A shell at Pi = 0 stays at 0 under this rule (as in the thesis, which
+//     starts it from the inflated state).
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -18,22 +28,42 @@ namespace cmp::shell {
 // The signed volume of x (3 #V doubles) for faces given as 3 corners each (flat).
 double signed_volume(std::span<const double> x, const std::vector<int>& corners);
 
+enum class PressureControl { ConstantTurgor, ConstantVolume };
+
 class TurgorPressure final : public EnergyTerm {
  public:
-  // Only the faces of `rest` are used. Throws cmp::UsageError for a non-finite Pi, a face
-  // index outside the mesh, a mesh that is not a closed, consistently oriented manifold, or one
-  // whose rest signed volume is not positive (faces oriented inward).
-  TurgorPressure(const mesh::TriMesh& rest, const PressureParameters& p);
-  std::string name() const override { return "turgor"; }
+  // Only the faces of `rest` are used; every shell starts at Pi = p.turgor. Throws
+  // cmp::UsageError for a non-finite Pi, a face index outside the mesh, a mesh that is not a
+  // closed, consistently oriented manifold, or a shell whose rest signed volume is not
+  // positive (faces oriented inward).
+  TurgorPressure(const mesh::TriMesh& rest, const PressureParameters& p,
+                 PressureControl control = PressureControl::ConstantTurgor);
+  std::string name() const override { return control_ == PressureControl::ConstantTurgor ? "turgor" : "volume"; }
   double energy(std::span<const double> x) const override;
   void add_gradient(std::span<const double> x, std::span<double> g) const override;
   long vertex_count() const override { return vertex_count_; }
-  double turgor() const { return turgor_; }
+
+  PressureControl control() const { return control_; }
+  int shell_count() const { return static_cast<int>(turgor_.size()); }
+  // Pi of shell 0 (the one shell of a single-cell run).
+  double turgor() const { return turgor_.front(); }
+  const std::vector<double>& turgors() const { return turgor_; }
+  void set_turgor(double pi);  // every shell
+  void set_turgors(const std::vector<double>& pi);
+  // The signed volume of every shell at x.
+  std::vector<double> volumes(std::span<const double> x) const;
+  const std::vector<double>& target_volumes() const { return target_; }
+  void set_target_volumes(const std::vector<double>& v0);
+  // The largest relative volume error max_s |V_s - V0_s| / V0_s at x.
+  double volume_error(std::span<const double> x) const;
+  // One step of the constant-volume rule on every shell (above), at x.
+  void update_turgor_towards_targets(std::span<const double> x);
 
  private:
-  double turgor_;
+  PressureControl control_;
   long vertex_count_;
-  std::vector<int> corners_;
+  std::vector<int> corners_, face_shell_;
+  std::vector<double> turgor_, target_;
 };
 
 }  // namespace cmp::shell

@@ -1,7 +1,8 @@
 // The generic harness: every registered style of every table (lib/shell/styles.hpp) on random
 // perturbed icosahedral meshes. Adding a style to a table adds it here with no new test code.
 //   - add_gradient against a central finite difference of energy
-//   - energy invariant under rigid translations and rotations
+//   - energy invariant under rigid translations and rotations (contacts: those that keep the
+//     walls, on two overlapping shells)
 //   - stretching and bending: zero energy and zero gradient on the rest mesh
 #include "shell/styles.hpp"
 
@@ -24,6 +25,33 @@ namespace {
 
 const MaterialParameters kMaterial{3.0, 0.3, 0.1};
 const PressureParameters kPressure{2.5};
+
+// Contacts: vertex spheres of radius 0.15 and two walls at z = -+0.95 facing each other; on
+// two shells (below) the deformed state overlaps both the other shell and the walls.
+ContactParameters contact_parameters() {
+  ContactParameters p;
+  p.vertex_radius = 0.15;
+  p.youngs_modulus = 3.0;
+  p.poisson_ratio = 0.3;
+  p.wall_modulus = 10.0;
+  p.wall_poisson_ratio = 0.4;
+  p.walls = {Plane{Eigen::Vector3d(0, 0, -0.95), Eigen::Vector3d::UnitZ()},
+             Plane{Eigen::Vector3d(0, 0, 0.95), -Eigen::Vector3d::UnitZ()}};
+  return p;
+}
+
+cmp::mesh::TriMesh one_shell(unsigned seed) { return fx::perturbed_icosphere(3, 0.02, seed); }
+
+// Two perturbed spheres of radius 1 whose centres are 1.95 apart along x.
+cmp::mesh::TriMesh two_shells(unsigned seed) {
+  const auto a = fx::perturbed_icosphere(3, 0.02, seed), b = fx::perturbed_icosphere(3, 0.02, seed + 10);
+  cmp::mesh::TriMesh m;
+  m.V.resize(a.V.rows() + b.V.rows(), 3);
+  m.F.resize(a.F.rows() + b.F.rows(), 3);
+  m.V << a.V, b.V.rowwise() + Eigen::RowVector3d(1.95, 0, 0);
+  m.F << a.F, b.F.array() + static_cast<int>(a.V.rows());
+  return m;
+}
 
 // A deformed state: the rest mesh inflated by 8 % and jittered by 3 % of the radius.
 std::vector<double> deformed(const cmp::mesh::TriMesh& rest, unsigned seed) {
@@ -53,12 +81,13 @@ double gradient_error(const EnergyTerm& term, std::vector<double> x, double h) {
 }
 
 template <class Table, class Parameters>
-void check_table(Table table, const Parameters& params, bool zero_at_rest) {
+void check_table(Table table, const Parameters& params, bool zero_at_rest,
+                 cmp::mesh::TriMesh (*make_rest)(unsigned) = &one_shell, bool keeps_walls = false) {
   REQUIRE(!table.empty());
   for (const auto& style : table) {
     for (unsigned seed : {1u, 2u, 3u}) {
       INFO("style " << style.name << " seed " << seed);
-      const auto rest = fx::perturbed_icosphere(3, 0.02, seed);
+      const auto rest = make_rest(seed);
       const auto term = style.make(rest, params);
       CHECK(term->name() == style.name);
       CHECK(term->vertex_count() == rest.V.rows());
@@ -82,9 +111,11 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest) {
       term->add_gradient(x, g2);
       for (std::size_t i = 0; i < x.size(); ++i) REQUIRE(g2[i] == Approx(2 * g1[i]).margin(1e-14));
 
-      const Eigen::Matrix3d R =
-          Eigen::AngleAxisd(0.7 + seed, Eigen::Vector3d(1.0, -2.0, 0.5 * seed).normalized()).toRotationMatrix();
-      const Eigen::Vector3d t(0.3, -1.2, 2.0);
+      // Contacts with walls at fixed z are invariant under the motions that keep the walls:
+      // rotations about z and translations in the xy plane.
+      const Eigen::Vector3d axis = keeps_walls ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d(1.0, -2.0, 0.5 * seed).normalized();
+      const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7 + seed, axis).toRotationMatrix();
+      const Eigen::Vector3d t(0.3, -1.2, keeps_walls ? 0.0 : 2.0);
       CHECK(term->energy(fx::moved(x, Eigen::Matrix3d::Identity(), t)) == Approx(e).epsilon(1e-11));
       CHECK(term->energy(fx::moved(x, R, Eigen::Vector3d::Zero())) == Approx(e).epsilon(1e-11));
       CHECK(term->energy(fx::moved(x, R, t)) == Approx(e).epsilon(1e-11));
@@ -117,6 +148,10 @@ TEST_CASE("every pressure style passes the gradient and invariance checks", "[sh
   check_table(pressure_styles(), kPressure, false);
 }
 
+TEST_CASE("every contact style passes the gradient and invariance checks", "[shell][styles]") {
+  check_table(contact_styles(), contact_parameters(), false, &two_shells, true);
+}
+
 TEST_CASE("style tables have unique names and one-line descriptions and find by name", "[shell][styles]") {
   std::vector<std::string> names;
   for (const auto& s : stretching_styles()) {
@@ -130,6 +165,10 @@ TEST_CASE("style tables have unique names and one-line descriptions and find by 
   for (const auto& s : pressure_styles()) {
     names.push_back(s.name);
     CHECK(&pressure_style(s.name) == &s);
+  }
+  for (const auto& s : contact_styles()) {
+    names.push_back(s.name);
+    CHECK(&contact_style(s.name) == &s);
   }
   auto sorted = names;
   std::sort(sorted.begin(), sorted.end());

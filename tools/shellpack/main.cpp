@@ -3,13 +3,21 @@
 //   shellpack jam -N 32 --seeds 1:100 > jam_stats.csv             many, in parallel
 //   shellpack jam -N 20 -o - | shellpack structure -              the packing down a pipe (no CSV then)
 //   shellpack structure jammed.xyz > rdf.csv                      g(r), Z, rattlers, contact forces
+//   shellpack shell --mesh cell.off --model svk -E 25e6 --nu 0.333 -t 0.1 --pressure 2.5e5 -o inflated.off > inflate.csv
+//   shellpack shell ... --walls 2.0 --squeeze 0.3 -o squeezed.off > plates.csv      one shell between two plates
+//   shellpack bench-mechanics sphere > sphere.csv                 the Appendix B benchmarks (Figs B.4-B.10)
 #include "cli/progress.hpp"
 #include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "core/parallel_for.hpp"
 #include "io/atomic_output.hpp"
+#include "elasticity/benchmark_curves.hpp"
+#include "io/off.hpp"
 #include "io/xyz.hpp"
+#include "shell/mechanics_benchmarks.hpp"
+#include "shell/shell_run.hpp"
+#include "shell/styles.hpp"
 #include "spheres/jamming.hpp"
 #include "spheres/jamming_report.hpp"
 #include "spheres/structure_report.hpp"
@@ -42,7 +50,92 @@ struct Options {
   int force_bins = 40;
   std::string forces_output, summary_output;
   std::string output = "-";
+  // shell
+  shell::ShellRunOptions run;
+  std::string mesh_path, mesh_output, shell_csv = "-", vertex_radius_text;
+  double vertex_radius = 0, wall_gap = 0;
+  bool list_models = false;
+  // bench-mechanics
+  std::string bench_case;
+  bool bench_full = false, bench_analytic = false;
 };
+
+// --list-models: every registered style of every kind, from the tables the options read.
+void list_models() {
+  const auto print = [](const char* kind, const auto& table) {
+    for (const auto& s : table) std::cout << kind << "," << s.name << ",\"" << s.description << "\"\n";
+  };
+  std::cout << "kind,name,description\n";
+  print("stretching", shell::stretching_styles());
+  print("bending", shell::bending_styles());
+  print("pressure", shell::pressure_styles());
+  print("contact", shell::contact_styles());
+}
+
+void check_shell(cli::Tool& tool, Options& o) {
+  if (o.list_models) return;
+  tool.check(!o.mesh_path.empty(), "--mesh", "is required (or --list-models)");
+  auto& m = o.run.model;
+  tool.collect("--model", [&] { shell::stretching_style(m.stretching); });
+  if (m.bending == "none") m.bending.clear();
+  if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
+  tool.collect("--pressure-model", [&] { shell::pressure_style(m.pressure); });
+  m.contact.vertex_radius = o.vertex_radius > 0 ? o.vertex_radius : m.material.thickness;
+  m.contact.youngs_modulus = m.material.youngs_modulus;
+  m.contact.poisson_ratio = m.material.poisson_ratio;
+  if (o.wall_gap > 0) o.run.wall_gap = o.wall_gap;
+  tool.check(o.run.squeeze == 0 || o.run.wall_gap.has_value(), "--squeeze", "needs --walls");
+  tool.check(!(o.mesh_output == "-" && o.shell_csv == "-"), "--csv",
+             "the mesh already goes to stdout (-o -): write the CSV to a file");
+}
+
+void run_shell_command(const Options& o, const std::string& provenance) {
+  // Everything about the input is checked before any work.
+  const auto off = io::read_off(o.mesh_path);
+  mesh::TriMesh rest{off.V, off.F};
+  shell::check_closed_shell_mesh(rest, o.mesh_path);
+  if (o.run.wall_gap) shell::check_walls_clear(rest, *o.run.wall_gap, o.run.model.contact.vertex_radius);
+  std::unique_ptr<io::AtomicOutput> csv_out;
+  if (!o.shell_csv.empty()) csv_out = std::make_unique<io::AtomicOutput>(o.shell_csv);
+  const int total = o.run.pressure_steps + (o.run.wall_gap ? o.run.squeeze_steps + 1 : 0);
+  cli::ProgressBar bar("relaxing", static_cast<double>(total), o.common.quiet);
+  const auto result = shell::run_shell(
+      rest, o.run,
+      [&](const shell::ShellRunRow& row) {
+        bar.update(static_cast<double>(row.step + 1));
+        if (!row.relax.converged())
+          std::cerr << "shellpack: warning: step " << row.step << " stopped by " << shell::relax_stop_name(row.relax.stop)
+                    << " at residual " << row.relax.residual << "\n";
+      },
+      {});
+  bar.finish();
+  if (csv_out) shell::write_shell_table(csv_out->stream(), result, o.run, provenance);
+  if (!o.mesh_output.empty()) {
+    mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(result.final_state.data(), rest.V.rows(), 3);
+    io::write_off(o.mesh_output, V, rest.F, {provenance});
+  }
+  if (csv_out) csv_out->commit();
+  if (!o.common.quiet && !result.rows.empty()) {
+    const auto& last = result.rows.back();
+    std::cerr << "shellpack: " << result.rows.size() << " steps; last: Pi " << last.observables.turgor << ", volume "
+              << last.observables.volume << ", " << shell::relax_stop_name(last.relax.stop) << " (residual "
+              << last.relax.residual << ")\n";
+  }
+}
+
+void run_bench_mechanics(const Options& o, const std::string& provenance) {
+  io::AtomicOutput out(o.output);
+  if (o.bench_analytic) {
+    elasticity::write_csv(out.stream(), elasticity::analytic_curve(o.bench_case));
+    out.commit();
+    return;
+  }
+  shell::run_mechanics_benchmark(o.bench_case, !o.bench_full, out.stream(), provenance,
+                                 [&](const std::string& note) {
+                                   if (!o.common.quiet) std::cerr << "shellpack: " << note << "\n";
+                                 });
+  out.commit();
+}
 
 // Where jam's CSV goes: --csv, or stdout when the packing does not go there (`-o -` alone
 // writes only the packing, so that `shellpack jam -o - | shellpack structure -` works).
@@ -172,7 +265,7 @@ void run_structure(const Options& o, const std::string& provenance) {
 int main(int argc, char** argv) {
   return cli::run_tool("shellpack", [&] {
     Options o;
-    cli::Tool tool("shellpack", "Jammed packings of soft spheres and their structure (thesis 5.5.1, Ch. 4).");
+    cli::Tool tool("shellpack", "Jammed packings of soft spheres, their structure, and pressurised elastic shells (thesis 5.5.1, Ch. 4, App. B).");
     auto* app = &tool.app();
     app->require_subcommand(1);
     tool.add_common(*app, o.common, cli::Tool::kQuiet);
@@ -227,6 +320,49 @@ int main(int argc, char** argv) {
     structure->add_option("--summary", o.summary_output, "write one row per packing (Z, rattlers, pressure, force cv) to this CSV");
     tool.add_common(*structure, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
+    auto& run = o.run;
+    auto& model = run.model;
+    model.pressure = "turgor";
+    auto* sh = app->add_subcommand("shell", "one pressurised elastic shell on a triangle mesh, inflated and optionally "
+                                            "squeezed between two plates (App. B); CSV row per load step");
+    sh->add_option("--mesh", o.mesh_path, "closed, outward-oriented triangle mesh (OFF; '-': stdin)");
+    sh->add_flag("--list-models", o.list_models, "list the registered stretching, bending, pressure and contact models (CSV) and exit");
+    sh->add_option("--model", model.stretching, "stretching model (--list-models)")->default_str("svk");
+    sh->add_option("--bending", model.bending, "bending model, or none (a membrane)")->default_str("none");
+    sh->add_option("--pressure-model", model.pressure, "turgor (constant Pi) or volume (inflate, then hold the volume)")
+        ->default_str("turgor");
+    tool.add_double(*sh, "-E,--youngs-modulus", model.material.youngs_modulus, "Young's modulus E [P: any pressure unit]",
+                    cli::positive());
+    tool.add_double(*sh, "--nu,--poisson-ratio", model.material.poisson_ratio, "Poisson's ratio nu",
+                    cli::left_open(-1, 0.5));
+    tool.add_double(*sh, "-t,--thickness", model.material.thickness, "wall thickness t [u: the mesh's length unit]",
+                    cli::positive());
+    tool.add_double(*sh, "--pressure", run.pressure, "turgor Pi to inflate to [P]");
+    tool.add_int(*sh, "--steps", run.pressure_steps, "inflation load steps (one CSV row each)", cli::at_least(1));
+    tool.add_double(*sh, "--walls", o.wall_gap, "put two plates this far apart (normal z, centred on the mesh) [u]",
+                    cli::non_negative());
+    tool.add_double(*sh, "--squeeze", run.squeeze, "reduce the plate gap by this fraction after inflating",
+                    cli::right_open(0, 1));
+    tool.add_int(*sh, "--squeeze-steps", run.squeeze_steps, "squeeze steps (one CSV row each)", cli::at_least(1));
+    tool.add_double(*sh, "--vertex-radius", o.vertex_radius, "Hertz vertex radius R_v [u] (default: t)", cli::non_negative());
+    tool.add_double(*sh, "--wall-modulus", model.contact.wall_modulus, "Young's modulus of the plates [P] (default: rigid)",
+                    cli::positive());
+    tool.add_double(*sh, "--ftol", run.relax.relative_tolerance,
+                    "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
+    tool.add_long(*sh, "--fire-max-iterations", run.relax.fire.max_iterations, "FIRE iteration cap per relaxation",
+                  cli::at_least(1));
+    sh->add_option("-o,--output", o.mesh_output, "write the relaxed mesh to this OFF ('-': stdout)");
+    sh->add_option("--csv", o.shell_csv, "the table of load steps ('-': stdout)")->default_str("-");
+    tool.add_common(*sh, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+
+    auto* bench = app->add_subcommand("bench-mechanics", "an Appendix B benchmark as CSV, computed beside the analytic curve");
+    bench->add_option("case", o.bench_case, "sphere, poisson, plate-point, plate-uniform, plate-large, plates-contact or buckling")
+        ->required();
+    bench->add_flag("--analytic", o.bench_analytic, "write the analytic reference curve of the case instead (lib/elasticity)");
+    bench->add_flag("--full", o.bench_full, "the thesis's mesh sizes and every load (slower; the figures)");
+    bench->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.add_common(*bench, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+
     tool.parse(argc, argv);
     std::vector<std::uint64_t> seeds;
     if (jam->parsed()) check_jam(tool, o, seeds);
@@ -235,11 +371,19 @@ int main(int argc, char** argv) {
       const int to_stdout = (o.output == "-") + (o.forces_output == "-") + (o.summary_output == "-");
       tool.check(to_stdout <= 1, "", "-o, --forces and --summary: at most one of them may be '-' (stdout)");
     }
+    if (sh->parsed()) check_shell(tool, o);
+    if (bench->parsed()) tool.collect("case", [&] { shell::check_mechanics_benchmark(o.bench_case); });
     tool.finish_checks();
     cli::apply_threads(o.common);
+    if (sh->parsed() && o.list_models) {
+      list_models();
+      return 0;
+    }
     const std::string provenance = cli::provenance("shellpack", argc, argv);
     if (jam->parsed()) run_jam(o, seeds, provenance);
     if (structure->parsed()) run_structure(o, provenance);
+    if (sh->parsed()) run_shell_command(o, provenance);
+    if (bench->parsed()) run_bench_mechanics(o, provenance);
     return 0;
   });
 }

@@ -1,0 +1,134 @@
+#include "shell/hertz_contacts.hpp"
+
+#include "shell/shell_partition.hpp"
+
+#include "core/errors.hpp"
+#include "neighbours/cell_grid.hpp"
+
+#include <cmath>
+
+namespace cmp::shell {
+
+namespace {
+void check_faces(const mesh::TriMesh& rest, const char* style) {
+  for (Eigen::Index f = 0; f < rest.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (rest.F(f, k) < 0 || rest.F(f, k) >= rest.V.rows())
+        throw UsageError(std::string(style) + ": face " + std::to_string(f) + " refers to vertex " +
+                         std::to_string(rest.F(f, k)) + " of a mesh with " + std::to_string(rest.V.rows()) +
+                         " vertices");
+}
+}  // namespace
+
+VertexContacts::VertexContacts(const mesh::TriMesh& rest, const ContactParameters& p)
+    : radius_(p.vertex_radius), estar_(p.vertex_effective_modulus()) {
+  validate(p, "hertz-vertices");
+  check_faces(rest, "hertz-vertices");
+  shell_of_ = shell_partition(rest.F, static_cast<int>(rest.V.rows())).vertex_shell;
+}
+
+template <class Fn>
+void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
+  scratch_.resize(n, 3);
+  std::copy(x.begin(), x.end(), scratch_.data());
+  if (n == 0) return;
+  const double cutoff = 2.0 * radius_;
+  neighbours::Box box;
+  box.lower = scratch_.colwise().minCoeff().transpose().array() - cutoff;
+  box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
+  if (!box.lower.allFinite() || !box.lengths.allFinite())
+    throw ComputationError("hertz-vertices: a vertex position is not finite");
+  neighbours::CellGrid grid(box, cutoff);
+  grid.build(scratch_);
+  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d& d, double r2) {
+    if (shell_of_[i] == shell_of_[j]) return;
+    f(i, j, d, std::sqrt(r2));
+  });
+}
+
+double VertexContacts::energy(std::span<const double> x) const {
+  check_sizes(x);
+  double sum = 0;
+  for_each_contact(x, [&](int, int, const Eigen::Vector3d&, double r) {
+    sum += hertz_energy(2.0 * radius_ - r, estar_, 0.5 * radius_);
+  });
+  return sum;
+}
+
+void VertexContacts::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
+  double* G = g.data();
+  for_each_contact(x, [&](int i, int j, const Eigen::Vector3d& d, double r) {
+    // dU/dx_i = -U'(h) d/r with d = x_i - x_j.
+    const double s = -hertz_force(2.0 * radius_ - r, estar_, 0.5 * radius_) / r;
+    for (int a = 0; a < 3; ++a) {
+      G[3 * i + a] += s * d[a];
+      G[3 * j + a] -= s * d[a];
+    }
+  });
+}
+
+std::vector<char> VertexContacts::touching(std::span<const double> x) const {
+  check_sizes(x);
+  std::vector<char> t(shell_of_.size(), 0);
+  for_each_contact(x, [&](int i, int j, const Eigen::Vector3d&, double) { t[i] = t[j] = 1; });
+  return t;
+}
+
+WallContacts::WallContacts(const mesh::TriMesh& rest, const ContactParameters& p)
+    : vertex_count_(rest.V.rows()), radius_(p.vertex_radius), estar_(p.wall_effective_modulus()), walls_(p.walls) {
+  validate(p, "hertz-walls");
+}
+
+void WallContacts::set_walls(std::vector<Plane> walls) {
+  ContactParameters p;
+  p.walls = walls;
+  validate(p, "hertz-walls");
+  walls_ = std::move(walls);
+}
+
+double WallContacts::energy(std::span<const double> x) const {
+  check_sizes(x);
+  const double* X = x.data();
+  double sum = 0;
+  for (const Plane& w : walls_)
+    for (long i = 0; i < vertex_count_; ++i) sum += hertz_energy(radius_ - w.distance(X + 3 * i), estar_, radius_);
+  return sum;
+}
+
+void WallContacts::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
+  const double* X = x.data();
+  double* G = g.data();
+  for (const Plane& w : walls_)
+    for (long i = 0; i < vertex_count_; ++i) {
+      const double f = hertz_force(radius_ - w.distance(X + 3 * i), estar_, radius_);
+      if (f == 0) continue;
+      for (int a = 0; a < 3; ++a) G[3 * i + a] -= f * w.normal[a];  // dh/dx = -normal
+    }
+}
+
+std::vector<double> WallContacts::wall_forces(std::span<const double> x) const {
+  check_sizes(x);
+  const double* X = x.data();
+  std::vector<double> out;
+  for (const Plane& w : walls_) {
+    double sum = 0;
+    for (long i = 0; i < vertex_count_; ++i) sum += hertz_force(radius_ - w.distance(X + 3 * i), estar_, radius_);
+    out.push_back(sum);
+  }
+  return out;
+}
+
+std::vector<char> WallContacts::touching(std::span<const double> x) const {
+  check_sizes(x);
+  const double* X = x.data();
+  std::vector<char> t(static_cast<std::size_t>(vertex_count_), 0);
+  for (const Plane& w : walls_)
+    for (long i = 0; i < vertex_count_; ++i)
+      if (w.distance(X + 3 * i) < radius_) t[i] = 1;
+  return t;
+}
+
+}  // namespace cmp::shell

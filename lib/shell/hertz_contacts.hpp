@@ -1,0 +1,69 @@
+#pragma once
+// Hertz contacts of shells (thesis B.2.5-B.2.6, Eq. B.60; parameters in shell_parameters.hpp):
+//   VertexContacts  vertex spheres of different shells (the mesh's connected components)
+//                   repel; vertices of one shell never interact with each other (the thesis's
+//                   "belonging to different shells"). Pairs come from linked cells
+//                   (lib/neighbours) rebuilt at every call over the vertices' bounding box.
+//   WallContacts    every vertex sphere against rigid planes (walls that may move between
+//                   relaxations: set_walls).
+#include "shell/energy_term.hpp"
+#include "shell/shell_parameters.hpp"
+
+#include "mesh/tri_mesh.hpp"
+
+#include <vector>
+
+namespace cmp::shell {
+
+// Hertz energy (8/15) E* sqrt(R*) h^(5/2) of an overlap h > 0, and its derivative in h.
+inline double hertz_energy(double h, double effective_modulus, double effective_radius);
+inline double hertz_force(double h, double effective_modulus, double effective_radius);
+
+class VertexContacts final : public EnergyTerm {
+ public:
+  // Throws cmp::UsageError for bad parameters or a face index outside the mesh.
+  VertexContacts(const mesh::TriMesh& rest, const ContactParameters& p);
+  std::string name() const override { return "hertz-vertices"; }
+  double energy(std::span<const double> x) const override;
+  void add_gradient(std::span<const double> x, std::span<double> g) const override;
+  long vertex_count() const override { return static_cast<long>(shell_of_.size()); }
+  // 1 for every vertex overlapping a vertex of another shell at x.
+  std::vector<char> touching(std::span<const double> x) const;
+
+ private:
+  template <class Fn>
+  void for_each_contact(std::span<const double> x, Fn&& f) const;
+  std::vector<int> shell_of_;
+  double radius_, estar_;
+  mutable mesh::VertexMatrix scratch_;
+};
+
+class WallContacts final : public EnergyTerm {
+ public:
+  // Throws cmp::UsageError for bad parameters.
+  WallContacts(const mesh::TriMesh& rest, const ContactParameters& p);
+  std::string name() const override { return "hertz-walls"; }
+  double energy(std::span<const double> x) const override;
+  void add_gradient(std::span<const double> x, std::span<double> g) const override;
+  long vertex_count() const override { return vertex_count_; }
+  const std::vector<Plane>& walls() const { return walls_; }
+  void set_walls(std::vector<Plane> walls);
+  // The total normal force the vertices exert on each wall at x (>= 0; along -normal).
+  std::vector<double> wall_forces(std::span<const double> x) const;
+  // 1 for every vertex overlapping a wall at x.
+  std::vector<char> touching(std::span<const double> x) const;
+
+ private:
+  long vertex_count_;
+  double radius_, estar_;
+  std::vector<Plane> walls_;
+};
+
+inline double hertz_energy(double h, double effective_modulus, double effective_radius) {
+  return h > 0 ? (8.0 / 15.0) * effective_modulus * std::sqrt(effective_radius) * h * h * std::sqrt(h) : 0.0;
+}
+inline double hertz_force(double h, double effective_modulus, double effective_radius) {
+  return h > 0 ? (4.0 / 3.0) * effective_modulus * std::sqrt(effective_radius) * h * std::sqrt(h) : 0.0;
+}
+
+}  // namespace cmp::shell

@@ -1,0 +1,138 @@
+#include "shell/relax.hpp"
+
+#include "core/errors.hpp"
+#include "mesh/edge_topology.hpp"
+
+#include <cmath>
+
+namespace cmp::shell {
+
+void RelaxParameters::validate() const {
+  fire.validate();
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw UsageError(std::string("relax: ") + what);
+  };
+  require(relative_tolerance > 0 && std::isfinite(relative_tolerance), "the relative force tolerance must be positive");
+  require(force_scale > 0 && std::isfinite(force_scale), "the force scale must be positive");
+  require(mass_factor > 0 && std::isfinite(mass_factor), "the mass factor must be positive");
+  require(volume_tolerance > 0, "the volume tolerance must be positive");
+  require(max_volume_updates >= 0, "the number of volume updates must not be negative");
+}
+
+double default_force_scale(const mesh::TriMesh& rest, double youngs_modulus, double thickness) {
+  const auto topo = mesh::edge_topology(rest.F);
+  double sum = 0;
+  for (Eigen::Index e = 0; e < topo.edges.rows(); ++e)
+    sum += (rest.V.row(topo.edges(e, 1)) - rest.V.row(topo.edges(e, 0))).norm();
+  const double mean = topo.edges.rows() > 0 ? sum / static_cast<double>(topo.edges.rows()) : 1.0;
+  return youngs_modulus * thickness * mean;
+}
+
+std::string relax_stop_name(RelaxStop stop) {
+  switch (stop) {
+    case RelaxStop::Converged: return "converged";
+    case RelaxStop::MaxIterations: return "max_iterations";
+    case RelaxStop::VolumeUpdates: return "volume_updates";
+    case RelaxStop::Interrupted: return "interrupted";
+  }
+  return "?";
+}
+
+double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterations) {
+  const Eigen::Index n = x.size();
+  // A deterministic start with every component (fixed vertices masked out).
+  Eigen::VectorXd v(n);
+  for (Eigen::Index i = 0; i < n; ++i) v[i] = std::sin(1.0 + 0.7 * static_cast<double>(i)) + 0.1;
+  for (long k = 0; k < s.vertex_count(); ++k)
+    if (s.fixed()[k]) v.segment<3>(3 * k).setZero();
+  double scale = 0;
+  for (Eigen::Index i = 0; i < n; ++i) scale = std::max(scale, std::abs(x[i]));
+  const double eps = 1e-7 * std::max(scale, 1e-300);
+  Eigen::VectorXd fp(n), fm(n);
+  double lambda = 0;
+  for (int it = 0; it < iterations; ++it) {
+    const double norm = v.norm();
+    if (!(norm > 0)) break;
+    v /= norm;
+    s.forces(x + eps * v, fp);
+    s.forces(x - eps * v, fm);
+    Eigen::VectorXd hv = (fm - fp) / (2 * eps);  // H v = -(dF/dx) v
+    lambda = v.dot(hv);
+    v = hv;
+  }
+  return std::abs(lambda);
+}
+
+namespace {
+
+// One FIRE run on s.x; adds to r.
+void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress) {
+  minimise::FireParameters fp = p.fire;
+  fp.force_tolerance = p.relative_tolerance * p.force_scale;
+  fp.mass = mass;
+  const long before = r.iterations;
+  const auto res = minimise::fire(
+      s.x, [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) { s.forces(y, f); }, fp,
+      [&](long it, double max_force) { return !progress || progress(before + it, max_force / p.force_scale); }, 200);
+  r.iterations += res.iterations;
+  r.force_evaluations += res.force_evaluations;
+  r.residual = res.max_force / p.force_scale;
+  r.stop = res.stop == minimise::FireStop::ForceTolerance ? RelaxStop::Converged
+           : res.stop == minimise::FireStop::Interrupted  ? RelaxStop::Interrupted
+                                                           : RelaxStop::MaxIterations;
+}
+
+}  // namespace
+
+RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress& progress) {
+  p.validate();
+  // Velocity Verlet is stable for dt < 2 sqrt(m / lambda_max): dt_max = 1.5 needs
+  // m > 0.5625 lambda_max; m = lambda_max leaves a margin of 1.33 in dt for stiffening.
+  const double lambda = stiffest_mode(s, s.x);
+  const double mass = p.mass_factor * std::max(lambda, 1e-300) * (p.fire.dt_max * p.fire.dt_max / 2.25);
+  RelaxResult r;
+  fire_once(s, p, mass, r, progress);
+  TurgorPressure* pressure = s.pressure();
+  if (!pressure || pressure->control() != PressureControl::ConstantVolume || !r.converged()) return r;
+  r.volume_error = pressure->volume_error(span_of(s.x));
+  while (r.volume_error > p.volume_tolerance) {
+    if (r.volume_updates >= p.max_volume_updates) {
+      r.stop = RelaxStop::VolumeUpdates;
+      return r;
+    }
+    pressure->update_turgor_towards_targets(span_of(s.x));
+    ++r.volume_updates;
+    fire_once(s, p, mass, r, progress);
+    if (!r.converged()) return r;
+    r.volume_error = pressure->volume_error(span_of(s.x));
+  }
+  return r;
+}
+
+void heun_step(ShellSystem& s, double dt, double damping) {
+  Eigen::VectorXd k1, k2;
+  s.forces(s.x, k1);
+  const double h = dt / damping;
+  s.forces(s.x + h * k1, k2);
+  s.x += 0.5 * h * (k1 + k2);
+}
+
+HeunResult heun_relax(ShellSystem& s, double dt, double damping, double relative_tolerance, double force_scale,
+                      long max_steps) {
+  HeunResult r;
+  Eigen::VectorXd f;
+  for (;; ++r.steps) {
+    s.forces(s.x, f);
+    r.residual = minimise::max_block_norm(f, 3) / force_scale;
+    if (!std::isfinite(r.residual))
+      throw ComputationError("heun: non-finite force after " + std::to_string(r.steps) + " steps (time step too large?)");
+    if (r.residual <= relative_tolerance) {
+      r.converged = true;
+      return r;
+    }
+    if (r.steps >= max_steps) return r;
+    heun_step(s, dt, damping);
+  }
+}
+
+}  // namespace cmp::shell

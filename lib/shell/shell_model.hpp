@@ -1,0 +1,26 @@
+#pragma once
+// A shell model as a user chooses it: the style of each kind by its registered name and the
+// parameters, and the system it builds on a rest mesh.
+#include "shell/shell_parameters.hpp"
+#include "shell/shell_system.hpp"
+
+#include <string>
+
+namespace cmp::shell {
+
+struct ShellModel {
+  std::string stretching = "svk";  // a name of stretching_styles()
+  std::string bending;             // a name of bending_styles(), or "" for a membrane
+  std::string pressure;            // a name of pressure_styles(), or "" for none
+  MaterialParameters material;
+  PressureParameters load;         // the starting turgor
+  bool walls = false;              // add hertz-walls (the planes in contact.walls, may be set later)
+  bool shell_contacts = false;     // add hertz-vertices (between the shells of the mesh)
+  ContactParameters contact;
+};
+
+// The system of `rest` with the model's terms, in the order stretching, bending, pressure,
+// walls, shell contacts. Throws cmp::UsageError for an unknown style name or bad parameters.
+ShellSystem make_shell_system(const mesh::TriMesh& rest, const ShellModel& model);
+
+}  // namespace cmp::shell

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Figs B.4-B.9 of the thesis: each `shellpack bench-mechanics` case at the thesis's sizes
+# (--full), split into one table per model, drawn over the analytic curve by
+# scripts/plot_shell_benchmark.gp. Usage: scripts/shell_figures.sh BUILD_DIR OUT_DIR [CASE...]
+# Runs under the machine-wide CPU lock when there is one. About two minutes on 2 cores.
+set -euo pipefail
+build=${1:-build}
+out=${2:-results/figures}
+shift 2 || true
+cases=${*:-sphere poisson plate-point plate-uniform plate-large plates-contact}
+src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+shellpack="$build/bin/shellpack"
+mkdir -p "$out/shell"
+lock() { if [ -w /work/.cpu.lock ]; then flock /work/.cpu.lock "$@"; else "$@"; fi; }
+for c in $cases; do
+  dir="$out/shell/$c"
+  mkdir -p "$dir"
+  echo "shell-figures: $c" >&2
+  lock "$shellpack" bench-mechanics "$c" --full -q -o "$dir/computed.csv"
+  "$shellpack" bench-mechanics "$c" --analytic -q -o "$dir/analytic.csv"
+  # One table per model (the first column), with a "# model=" line for the key; the plate
+  # profiles keep the thesis's load only.
+  files=""
+  for m in $(awk -F, '!/^#/ && h { print $1 } !/^#/ { h = 1 }' "$dir/computed.csv" | sort -u); do
+    f="$dir/$m.csv"
+    { echo "# model=$m"
+      awk -F, -v m="$m" '/^#/ { next } !h { print; h = 1; for (i = 1; i <= NF; i++) if ($i == "load") l = i; next }
+                         $1 == m && (!l || $l == "thesis")' "$dir/computed.csv"; } >"$f"
+    files="$files $f"
+  done
+  gnuplot -e "analytic='$dir/analytic.csv'; computed='${files# }'; out='$out/shell_$c.png'" "$src/scripts/plot_shell_benchmark.gp"
+  echo "shell-figures: wrote $out/shell_$c.png" >&2
+done
