@@ -19,7 +19,7 @@ cases=(
   "percolate_labelling|percolate labelling: 256^3 random image, porosity 0.35|$bench/bench_voxel label 256 0.35 {T}"
   "percolate_cli|percolate on a jammed packing of 50 spheres, --scale 1.1 --delta 0.01|$bin/percolate $work/jam.xyz --scale 1.1 --delta 0.01 --threads {T} -q --csv /dev/null"
   "rndmesh_seeds|rndmesh random -n 300 --seeds 1:4|$bin/rndmesh random -n 300 --seeds 1:4 --threads {T} -q -o $work/m_{seed}.off"
-  "lbflow_cluster|lbflow on the cluster of a jammed packing of 50 spheres, delta 0.04, M = 1, 1500 steps|$bin/lbflow $work/cluster.vtk --refine 1 --max-steps 1500 --threads {T} -q -o /dev/null || true"
+  "lbflow_cluster|lbflow on the cluster of a jammed packing of 50 spheres, delta 0.04, M = 1, 600 steps|$bin/lbflow $work/cluster.vtk --refine 1 --max-steps 600 --threads {T} -q -o /dev/null || true"
   "jam2d_sweep|jam2d sweep --box 8 --seeds 1:4 (jamming, 4 colonies)|$bin/jam2d sweep --box 8 --seeds 1:4 --threads {T} -q > /dev/null"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )

@@ -2,7 +2,7 @@
 # Figs B.4-B.9 of the thesis: each `shellpack bench-mechanics` case at the thesis's sizes
 # (--full), split into one table per model, drawn over the analytic curve by
 # scripts/plot_shell_benchmark.gp. Usage: scripts/shell_figures.sh BUILD_DIR OUT_DIR [CASE...]
-# Runs under the machine-wide CPU lock when there is one. About two minutes on 2 cores.
+# About two minutes on 2 cores.
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/figures}
@@ -11,12 +11,11 @@ cases=${*:-sphere poisson plate-point plate-uniform plate-large plates-contact}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 shellpack="$build/bin/shellpack"
 mkdir -p "$out/shell"
-lock() { if [ -w /work/.cpu.lock ]; then flock /work/.cpu.lock "$@"; else "$@"; fi; }
 for c in $cases; do
   dir="$out/shell/$c"
   mkdir -p "$dir"
   echo "shell-figures: $c" >&2
-  lock "$shellpack" bench-mechanics "$c" --full -q -o "$dir/computed.csv"
+  "$shellpack" bench-mechanics "$c" --full -q -o "$dir/computed.csv"
   "$shellpack" bench-mechanics "$c" --analytic -q -o "$dir/analytic.csv"
   # One table per model (the first column), with a "# model=" line for the key; the plate
   # profiles keep the thesis's load only.
