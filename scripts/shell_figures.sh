@@ -17,10 +17,15 @@ for c in $cases; do
   echo "shell-figures: $c" >&2
   "$shellpack" bench-mechanics "$c" --full -q -o "$dir/computed.csv"
   "$shellpack" bench-mechanics "$c" --analytic -q -o "$dir/analytic.csv"
-  # One table per model (the first column), with a "# model=" line for the key; the plate
-  # profiles keep the thesis's load only.
+  # One table per model (the first column, when the table has one; plates-contact is one
+  # model), with a "# model=" line for the key; the plate profiles keep the thesis's load only.
   files=""
-  for m in $(awk -F, '!/^#/ && h { print $1 } !/^#/ { h = 1 }' "$dir/computed.csv" | sort -u); do
+  models=$(awk -F, '!/^#/ && !h { h = 1; m = ($1 == "model"); next } !/^#/ && m { print $1 }' "$dir/computed.csv" | sort -u)
+  if [ -z "$models" ]; then
+    { echo "# model=mesh"; grep -v '^#' "$dir/computed.csv"; } >"$dir/mesh.csv"
+    files=" $dir/mesh.csv"
+  fi
+  for m in $models; do
     f="$dir/$m.csv"
     { echo "# model=$m"
       awk -F, -v m="$m" '/^#/ { next } !h { print; h = 1; for (i = 1; i <= NF; i++) if ($i == "load") l = i; next }
