@@ -10,11 +10,9 @@
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "flowrun/checkpoint_file.hpp"
+#include "flowrun/flow_batch.hpp"
 #include "flowrun/flow_case.hpp"
 #include "flowrun/flow_run.hpp"
-#include "flowrun/flow_table.hpp"
-#include "flowrun/flow_vtk.hpp"
-#include "io/atomic_output.hpp"
 #include "io/csv.hpp"
 #include "lbm/collision.hpp"
 #include "voxel/percolation.hpp"
@@ -23,7 +21,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <optional>
 #include <set>
 
 using namespace cmp;
@@ -156,74 +153,6 @@ Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& ar
   return p;
 }
 
-int run(const Options& o, const Plan& plan, const std::string& provenance) {
-  const int axis = plan.run.flow.axis;
-  const bool periodic_axis = plan.run.flow.driving == lbm::Driving::kBodyForce;
-  // Every input is read and checked first: a bad or non-percolating one stops the run
-  // before any output is written.
-  std::vector<flowrun::FlowCase> cases;
-  for (const auto& path : o.inputs) cases.push_back(flowrun::read_flow_case(path, {o.dims, o.refine, o.delta, o.scale, o.d0, axis, periodic_axis}));
-  // The outputs' temporaries appear with their first row, not while the first flow runs.
-  io::AtomicOutput csv_out(o.csv);
-  std::optional<io::CsvWriter> csv;
-  std::optional<io::AtomicOutput> history_out;
-  std::optional<io::CsvWriter> history;
-  if (!o.history.empty()) history_out.emplace(o.history);
-  std::vector<std::string> stalled;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    auto& c = cases[i];
-    flowrun::FlowOutcome out;
-    {
-      flowrun::FlowRun runner(c, plan.run);
-      out = runner.run();
-      if (!o.vtk.empty())
-        flowrun::write_flow_vtk(plan.vtk_names[i], runner.field(out),
-                                fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
-                                            "density in lattice units) | {}", c.file, c.refine, provenance));
-    }
-    c.release_lattice();
-    if (!csv) {
-      csv.emplace(csv_out.stream());
-      flowrun::write_flow_meta(*csv, provenance, plan.run.flow, plan.run.convergence);
-      csv->header(flowrun::flow_columns(o.timings));
-    }
-    csv->row(flowrun::flow_row(c, plan.run.flow, out, o.timings));
-    if (history_out) {
-      if (!history) {
-        history.emplace(history_out->stream());
-        history->meta("provenance", provenance);
-        history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
-        history->header(flowrun::history_columns());
-      }
-      for (const auto& row : flowrun::history_rows(c, out.result, plan.run.convergence.window)) history->row(row);
-    }
-    if (!o.common.quiet || o.timings) std::cerr << "lbflow: " << flowrun::flow_summary(c, out, o.timings) << '\n';
-    const auto& r = out.result.final;
-    if (r.mach > 0.1 || r.reynolds > 1)
-      std::cerr << fmt::format("lbflow: warning: {}: Mach number {:.3g} (max |u| / c_s), Reynolds number {:.3g}: the "
-                               "flow leaves the Stokes regime (keep Ma below 0.1 and Re below 1): lower --{}\n",
-                               c.file, r.mach, r.reynolds, o.drive == "force" ? "body-force" : "density-drop");
-    if (!out.result.converged) {
-      const auto& h = out.result.history;
-      const auto change = h.empty() ? std::nullopt : flowrun::relative_change(h, h.size() - 1, o.window);
-      stalled.push_back(fmt::format("{}: not converged after {} steps (--max-steps): kappa {:.6g} lu, relative change "
-                                    "{} over the last {} checks, --tol {}{}",
-                                    c.file, r.steps, r.kappa_lu, change ? fmt::format("{:.3g}", *change) : "unknown",
-                                    o.window, io::format_number(o.tol),
-                                    o.checkpoint.empty() ? "" : "; continue with lbflow --resume " + o.checkpoint +
-                                                                    " --max-steps N"));
-    }
-  }
-  csv_out.commit();
-  if (history_out) history_out->commit();
-  if (!stalled.empty()) {
-    std::string message;
-    for (const auto& s : stalled) message += (message.empty() ? "" : "\n") + s;
-    throw ComputationError(message);
-  }
-  return 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -255,6 +184,13 @@ int main(int argc, char** argv) {
     const auto plan = check(*tool, o, args);
     tool->finish_checks();
     cli::apply_threads(o.common);
-    return run(o, plan, cli::provenance("lbflow", argc, argv));
+    flowrun::FlowBatch batch{o.inputs,
+                             {o.dims, o.refine, o.delta, o.scale, o.d0, plan.run.flow.axis,
+                              plan.run.flow.driving == lbm::Driving::kBodyForce},
+                             plan.run, plan.vtk_names, o.csv, o.history, o.timings, o.common.quiet,
+                             o.drive == "force" ? "body-force" : "density-drop",
+                             o.checkpoint.empty() ? "" : "; continue with lbflow --resume " + o.checkpoint + " --max-steps N"};
+    flowrun::run_flow_batch(batch, cli::provenance("lbflow", argc, argv));
+    return 0;
   });
 }

@@ -1,0 +1,80 @@
+#include "flowrun/flow_batch.hpp"
+
+#include "core/errors.hpp"
+#include "flowrun/flow_table.hpp"
+#include "flowrun/flow_vtk.hpp"
+#include "io/atomic_output.hpp"
+#include "io/csv.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <optional>
+
+namespace cmp::flowrun {
+
+void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
+  // Every input is read and checked first: a bad or non-percolating one stops the run
+  // before any output is written.
+  std::vector<FlowCase> cases;
+  for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
+  // The outputs' temporaries appear with their first row, not while the first flow runs.
+  io::AtomicOutput csv_out(o.csv);
+  std::optional<io::CsvWriter> csv;
+  std::optional<io::AtomicOutput> history_out;
+  std::optional<io::CsvWriter> history;
+  if (!o.history.empty()) history_out.emplace(o.history);
+  std::vector<std::string> stalled;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    auto& c = cases[i];
+    FlowOutcome out;
+    {
+      FlowRun runner(c, o.run);
+      out = runner.run();
+      if (!o.vtk_names[i].empty())
+        write_flow_vtk(o.vtk_names[i], runner.field(out),
+                                fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
+                                            "density in lattice units) | {}", c.file, c.refine, provenance));
+    }
+    c.release_lattice();
+    if (!csv) {
+      csv.emplace(csv_out.stream());
+      write_flow_meta(*csv, provenance, o.run.flow, o.run.convergence);
+      csv->header(flow_columns(o.timings));
+    }
+    csv->row(flow_row(c, o.run.flow, out, o.timings));
+    if (history_out) {
+      if (!history) {
+        history.emplace(history_out->stream());
+        history->meta("provenance", provenance);
+        history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
+        history->header(history_columns());
+      }
+      for (const auto& row : history_rows(c, out.result, o.run.convergence.window)) history->row(row);
+    }
+    if (!o.quiet || o.timings) std::cerr << "lbflow: " << flow_summary(c, out, o.timings) << '\n';
+    const auto& r = out.result.final;
+    if (r.mach > 0.1 || r.reynolds > 1)
+      std::cerr << fmt::format("lbflow: warning: {}: Mach number {:.3g} (max |u| / c_s), Reynolds number {:.3g}: the "
+                               "flow leaves the Stokes regime (keep Ma below 0.1 and Re below 1): lower --{}\n",
+                               c.file, r.mach, r.reynolds, o.drop_option);
+    if (!out.result.converged) {
+      const auto& h = out.result.history;
+      const auto change = h.empty() ? std::nullopt : relative_change(h, h.size() - 1, o.run.convergence.window);
+      stalled.push_back(fmt::format("{}: not converged after {} steps (--max-steps): kappa {:.6g} lu, relative change "
+                                    "{} over the last {} checks, --tol {}{}",
+                                    c.file, r.steps, r.kappa_lu, change ? fmt::format("{:.3g}", *change) : "unknown",
+                                    o.run.convergence.window, io::format_number(o.run.convergence.tol), o.resume_hint));
+    }
+  }
+  csv_out.commit();
+  if (history_out) history_out->commit();
+  if (!stalled.empty()) {
+    std::string message;
+    for (const auto& s : stalled) message += (message.empty() ? "" : "\n") + s;
+    throw ComputationError(message);
+  }
+}
+
+
+}  // namespace cmp::flowrun
