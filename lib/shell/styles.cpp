@@ -89,4 +89,15 @@ const BendingStyle& bending_style(const std::string& name) { return find(bending
 const PressureStyle& pressure_style(const std::string& name) { return find(pressure_styles(), name, "pressure"); }
 const ContactStyle& contact_style(const std::string& name) { return find(contact_styles(), name, "contact"); }
 
+void write_model_list(std::ostream& out) {
+  const auto print = [&](const char* kind, const auto& table) {
+    for (const auto& s : table) out << kind << "," << s.name << ",\"" << s.description << "\"\n";
+  };
+  out << "kind,name,description\n";
+  print("stretching", stretching_styles());
+  print("bending", bending_styles());
+  print("pressure", pressure_styles());
+  print("contact", contact_styles());
+}
+
 }  // namespace cmp::shell

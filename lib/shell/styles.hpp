@@ -8,6 +8,7 @@
 #include "mesh/tri_mesh.hpp"
 
 #include <memory>
+#include <ostream>
 #include <span>
 #include <string>
 
@@ -37,5 +38,9 @@ const StretchingStyle& stretching_style(const std::string& name);
 const BendingStyle& bending_style(const std::string& name);
 const PressureStyle& pressure_style(const std::string& name);
 const ContactStyle& contact_style(const std::string& name);
+
+// Every registered style of every kind as CSV (kind,name,description), from the tables above:
+// what `shellpack shell --list-models` prints.
+void write_model_list(std::ostream& out);
 
 }  // namespace cmp::shell
