@@ -71,7 +71,7 @@ tables: deps all
 jamming-figure: deps all
 	@scripts/jamming_figure.sh $(BUILD) $(OUT)/figures
 
-# Figs B.4-B.9: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
+# Figs B.4-B.10: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
 shell-figures: deps all
 	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
 

@@ -38,7 +38,7 @@ set datafile commentschars "#"
 set grid
 set key top left
 if (case eq "plate-large") { set logscale xy }
-if (case eq "buckling") { set logscale x; set yrange [0:1.2] }
+if (case eq "buckling") { set logscale x; set yrange [0:1.2]; set xrange [700:70000]; set key bottom left; set linetype 8 lc rgb '#8c564b' }
 if (case eq "plate-point" || case eq "plate-uniform") { set yrange [*:*] reverse; set key bottom right }
 set multiplot layout 1,npanels title sprintf("%s: analytic (line) and computed (points)", case) noenhanced
 do for [k = 1:npanels] {

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Figs B.4-B.9 of the thesis: each `shellpack bench-mechanics` case at the thesis's sizes
+# Figs B.4-B.10 of the thesis: each `shellpack bench-mechanics` case at the thesis's sizes
 # (--full), split into one table per model, drawn over the analytic curve by
 # scripts/plot_shell_benchmark.gp. Usage: scripts/shell_figures.sh BUILD_DIR OUT_DIR [CASE...]
-# About two minutes on 2 cores.
+# About three minutes on 2 cores (buckling: one more minute, one core).
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/figures}
 shift 2 || true
-cases=${*:-sphere poisson plate-point plate-uniform plate-large plates-contact}
+cases=${*:-sphere poisson plate-point plate-uniform plate-large plates-contact buckling}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 shellpack="$build/bin/shellpack"
 mkdir -p "$out/shell"

@@ -1,5 +1,6 @@
 #include "shell/mechanics_benchmarks.hpp"
 
+#include "shell/buckling_run.hpp"
 #include "shell/flat_sheets.hpp"
 #include "shell/membrane_squeeze.hpp"
 #include "shell/sphere_inflation.hpp"
@@ -7,6 +8,9 @@
 #include "core/errors.hpp"
 #include "elasticity/clamped_plate.hpp"
 #include "io/csv.hpp"
+#include "spheremesh/annealing.hpp"
+#include "spheremesh/spherical_delaunay.hpp"
+#include "spheremesh/subdivision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -200,6 +204,82 @@ void write_plate_large(bool quick, std::ostream& out, const std::string& provena
   }
 }
 
+// One mesh of the buckling case: a label (the CSV's model column), the annealing's T_end
+// (NaN for the subdivision mesh) and the mesh on the unit sphere.
+struct BucklingMesh {
+  std::string label;
+  double t_end;
+  mesh::TriMesh rest;
+};
+
+// N points annealed from T_max = 1000 down to T_end (A.2.2), triangulated.
+BucklingMesh annealed_mesh(int points, double t_end, int anneals, int sweeps) {
+  spheremesh::AnnealingParameters a;
+  a.points = points;
+  a.t_min = t_end;
+  a.anneals = anneals;
+  a.sweeps_per_anneal = sweeps;
+  const auto r = spheremesh::anneal_on_sphere(a);
+  return {fmt::format("rndmesh-T{:g}", t_end), t_end, {r.points, spheremesh::spherical_delaunay(r.points)}};
+}
+
+// The buckling series: the thesis's springs on every mesh, and the SVK membrane (with the same
+// hinges) on some, whose stress stays uniform on unequal triangles (see buckling_run.hpp).
+struct BucklingSeries {
+  std::size_t mesh;
+  const char* stretching;
+};
+
+void write_buckling(bool quick, std::ostream& out, const std::string& provenance,
+                    const std::function<void(const std::string&)>& note) {
+  const std::vector<double> gammas = quick ? std::vector<double>{1e3, 1e4} : std::vector<double>{1e3, 5e3, 1e4, 5e4};
+  const int level = 4;
+  const int points = quick ? 642 : 1000;
+  const std::vector<double> t_ends = quick ? std::vector<double>{200} : std::vector<double>{0.1, 10, 50, 200};
+  const int anneals = quick ? 50 : 200, sweeps = quick ? 20 : 100;
+  std::vector<BucklingMesh> meshes;
+  meshes.push_back({fmt::format("icosa-L{}", level), std::nan(""),
+                    spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, level, 1.0)});
+  for (double t : t_ends) {
+    if (note) note(fmt::format("buckling: annealing {} points to T_end = {:g}", points, t));
+    meshes.push_back(annealed_mesh(points, t, anneals, sweeps));
+  }
+  std::vector<BucklingSeries> series;
+  for (std::size_t k = 0; k < meshes.size(); ++k) series.push_back({k, "springs-seung-nelson"});
+  if (!quick)
+    for (std::size_t k : {std::size_t{0}, std::size_t{1}, meshes.size() - 1}) series.push_back({k, "svk"});
+  BucklingCase c;
+  io::CsvWriter csv(out);
+  csv.meta("provenance", provenance);
+  csv.meta("case", "buckling (B.7, Fig. B.10): sphere under growing external pressure, buckling pressure / p_c");
+  csv.meta("shell", "bending " + c.bending + ", stretching springs-seung-nelson (the thesis's) or svk; E = 1, R0 = 1, "
+                    "nu = 1/3, t from gamma");
+  csv.meta("annealing", fmt::format("{} points, T_max = 1000, {} anneals of {} sweeps, seed 1", points, anneals, sweeps));
+  csv.meta("protocol", fmt::format("p/p_c raised in steps of {:g} from the last stable state, bracket halved to {:g}; "
+                                   "buckled when V drops {:g} below the last stable V; kick {:g} t per relaxation, "
+                                   "seed {}",
+                                   c.step, c.resolution, c.volume_drop, c.kick, c.seed));
+  csv.meta("columns", "model = mesh (icosa-L<level> or rndmesh-T<T_end>), -svk for the SVK membrane; p_pc = first "
+                      "buckled p/p_c; p_pc_stable = last stable p/p_c; p_pc_theory = 1; V_V0 and dr_t = rms radial "
+                      "deviation / t at p_pc_stable");
+  csv.header({"model", "stretching", "T_end", "vertices", "gamma", "p_pc", "p_pc_stable", "p_pc_theory", "V_V0",
+              "dr_t", "R0_t", "relaxations", "iterations", "unconverged", "nonfinite"});
+  for (const auto& [k, stretching] : series) {
+    const BucklingMesh& m = meshes[k];
+    const std::string label = m.label + (std::string(stretching) == "svk" ? "-svk" : "");
+    c.stretching = stretching;
+    for (double g : gammas) {
+      c.gamma = g;
+      const auto r = buckling_run(m.rest, c);
+      if (note) note(fmt::format("buckling: {} gamma {:g}: p/p_c = {:.4f}", label, g, r.pressure));
+      csv.row({label, stretching, std::isnan(m.t_end) ? "" : format_number(m.t_end), std::to_string(m.rest.V.rows()),
+               format_number(g), r.buckled ? format_number(r.pressure) : "", format_number(r.stable_pressure), "1",
+               format_number(r.stable_volume), format_number(r.stable_roughness), format_number(1.0 / r.thickness),
+               std::to_string(r.relaxations), std::to_string(r.iterations), std::to_string(r.unconverged), std::to_string(r.nonfinite)});
+    }
+  }
+}
+
 struct Case {
   const char* name;
   void (*run)(bool, std::ostream&, const std::string&, const std::function<void(const std::string&)>&);
@@ -212,6 +292,7 @@ const Case kCases[] = {
     {"plate-uniform", &write_plate_uniform},
     {"plate-large", &write_plate_large},
     {"plates-contact", &write_plates_contact},
+    {"buckling", &write_buckling},
 };
 
 }  // namespace

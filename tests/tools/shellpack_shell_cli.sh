@@ -123,5 +123,13 @@ case_bench_sphere() {
   grep -q "^model,dP_E,eps_r,eps_r_svk," sphere.csv || fail "header"
   awk -F, '!/^#/ && $1 == "svk" { e = $7; if (e < 0) e = -e; if (e > 0.01) exit 1 }' sphere.csv || fail "svk off: $(cat sphere.csv)"
 }
+case_bench_buckling() {
+  "$shellpack" bench-mechanics buckling -q -o buckling.csv || fail "buckling"
+  grep -q "^model,stretching,T_end,vertices,gamma,p_pc," buckling.csv || fail "header"
+  # Every shell buckles below p_c, the T_end = 200 mesh lower than the icosahedral one.
+  awk -F, '!/^#/ && $1 != "model" { p[$1 "," $5] = $6; if ($6 == "" || $6 <= 0.4 || $6 >= 1) exit 1 }
+           END { if (!(p["icosa-L4,1000"] > p["rndmesh-T200,1000"] && p["icosa-L4,10000"] > p["rndmesh-T200,10000"])) exit 1 }' \
+    buckling.csv || fail "buckling pressures: $(cat buckling.csv)"
+}
 
 run_cases "$@"
