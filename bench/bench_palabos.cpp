@@ -257,14 +257,14 @@ int poiseuille() {
         duct, new GuoExternalForceMRTdynamics<T, ForcedMRTD3Q19Descriptor>(1 / tau), tau);
     const double kp_bgk = palabos_kappa<ForcedD3Q19Descriptor>(
         duct, new GuoExternalForceBGKdynamics<T, ForcedD3Q19Descriptor>(1 / tau), tau);
-    std::printf("square_duct,%d,%.2f,%.10g,%.10g,%.10g,%.10g,%.10g\n", w, tau, kp_mrt, lbflow_kappa(duct, "mrt-dh", tau),
+    std::printf("square_duct,%d,%.2f,%.15g,%.15g,%.15g,%.15g,%.15g\n", w, tau, kp_mrt, lbflow_kappa(duct, "mrt-dh", tau),
                 lbflow_kappa(duct, "mrt", tau), kp_bgk, lbflow_kappa(duct, "bgk", tau));
     std::fflush(stdout);
   }
   // Pressure planes (Zou & He in both), MRT with the same rates, a longer duct.
   const PoreLattice long_duct = cmp::lbm::channel(16, w, 0, 1, true, w);
   const double kp = palabos_kappa<MRTD3Q19Descriptor>(long_duct, new MRTdynamics<T, MRTD3Q19Descriptor>(1.), 1., true);
-  std::printf("square_duct_pressure_16,%d,1.00,%.10g,%.10g,%.10g,,\n", w, kp, lbflow_kappa(long_duct, "mrt-dh", 1., true),
+  std::printf("square_duct_pressure_16,%d,1.00,%.15g,%.15g,%.15g,,\n", w, kp, lbflow_kappa(long_duct, "mrt-dh", 1., true),
               lbflow_kappa(long_duct, "mrt", 1., true));
   return 0;
 }
