@@ -5,7 +5,8 @@
 # processes (the Debian library is built with MPI; one process per core), the N = 50, delta =
 # 0.04 cluster of bench_lbflow_run.sh at M = 1 (20 steps) and M = 3 (10 steps) through both
 # codes, and a square-duct permeability from both (the same physics?). Skipped when
-# bench_palabos was not built. PAL_N (128) sets the box side for a quick try. Sourced by scripts/bench.sh ($build, $bench, $out, $machine, $stamp).
+# bench_palabos was not built. PAL_N (128) sets the box side for a quick try. Sourced by
+# scripts/bench.sh ($build, $bench, $out, $machine, $stamp).
 if [ ! -x "$bench/bench_palabos" ]; then
   echo "== Palabos: bench_palabos not built (libplb-dev or MPI not found); skipped" >&2
 else
