@@ -1,11 +1,12 @@
 // Palabos 1.5 (Debian libplb-dev, the lattice Boltzmann engine the thesis used) beside
 // lbflow's kernel, for make bench. Built only when CMake finds Palabos and MPI (the Debian
 // library is built with MPI: run it under `mpirun -np P`; each rank is one core).
-//   bench_palabos speed N STEPS              Palabos D3Q19 MRT, BGK (and TRT on the porous box)
+//   bench_palabos speed N STEPS [mrt]        Palabos D3Q19 MRT, BGK (and TRT on the porous box)
 //                                            on the dense N^3 periodic box (Guo body force; MRT
 //                                            also with pressure planes, no force term) and
 //                                            on bench_lbm's porous N^3 box (the same random
-//                                            spheres, pressure planes): MLUPS over fluid nodes
+//                                            spheres, pressure planes): MLUPS over fluid nodes;
+//                                            `mrt`: the MRT runs only
 //   bench_palabos cluster FILE M STEPS       the same for the lattice lbflow builds from an
 //                                            image (its percolating cluster, refined M times),
 //                                            pressure planes along x, MRT
@@ -168,16 +169,18 @@ void speed_row(const char* what, const PoreLattice& pore, const char* collision,
 const char* kSpeedHeader =
     "case,N,porosity,processes,collision,driving,fluid_nodes,steps,seconds,mlups,mlups_all_nodes,bytes_per_node\n";
 
-int speed(int n, long steps) {
+int speed(int n, long steps, bool mrt_only) {
   using namespace plb;
   using namespace plb::descriptors;
   if (main_rank()) std::printf("%s", kSpeedHeader);
   const PoreLattice dense = cmp::lbm::open_box(n, n, n);
   speed_row<ForcedMRTD3Q19Descriptor>("dense", dense, "mrt", new GuoExternalForceMRTdynamics<T, ForcedMRTD3Q19Descriptor>(1.), false, steps);
-  speed_row<ForcedD3Q19Descriptor>("dense", dense, "bgk", new GuoExternalForceBGKdynamics<T, ForcedD3Q19Descriptor>(1.), false, steps);
+  if (!mrt_only)
+    speed_row<ForcedD3Q19Descriptor>("dense", dense, "bgk", new GuoExternalForceBGKdynamics<T, ForcedD3Q19Descriptor>(1.), false, steps);
   speed_row<MRTD3Q19Descriptor>("dense", dense, "mrt", new MRTdynamics<T, MRTD3Q19Descriptor>(1.), true, steps);
   const PoreLattice porous = porous_box(n, 0.35);
   speed_row<MRTD3Q19Descriptor>("porous", porous, "mrt", new MRTdynamics<T, MRTD3Q19Descriptor>(1.), true, steps);
+  if (mrt_only) return 0;
   speed_row<D3Q19Descriptor>("porous", porous, "bgk", new BGKdynamics<T, D3Q19Descriptor>(1.), true, steps);
   speed_row<D3Q19Descriptor>("porous", porous, "trt", new TRTdynamics<T, D3Q19Descriptor>(1.), true, steps);
   return 0;
@@ -275,7 +278,8 @@ int main(int argc, char** argv) {
   plb::plbInit(&argc, &argv);
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
-    if (mode == "speed" && argc == 4) return speed(std::atoi(argv[2]), std::atol(argv[3]));
+    if (mode == "speed" && (argc == 4 || (argc == 5 && std::string(argv[4]) == "mrt")))
+      return speed(std::atoi(argv[2]), std::atol(argv[3]), argc == 5);
     if (mode == "cluster" && argc == 5) return cluster(argv[2], std::atoi(argv[3]), std::atol(argv[4]));
     if (mode == "lbflow-cluster" && argc == 6)
       return lbflow_cluster(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atol(argv[5]));
@@ -285,6 +289,6 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr,
-               "usage: bench_palabos speed N STEPS | cluster FILE M STEPS | lbflow-cluster FILE M THREADS STEPS | poiseuille\n");
+               "usage: bench_palabos speed N STEPS [mrt] | cluster FILE M STEPS | lbflow-cluster FILE M THREADS STEPS | poiseuille\n");
   return 2;
 }
