@@ -16,8 +16,8 @@
 //                                            and from lbflow (body force, tau = 1 and 1.5;
 //                                            pressure planes, tau = 1)
 // Each prints CSV with a header line (rank 0 only). Timings: best of 3 runs of STEPS steps
-// after 2 warm-up steps, between MPI barriers; Palabos's internal statistics are off (as in
-// its own benchmarks), solid nodes are BounceBack cells of the dense block lattice (Palabos
+// after 2 warm-up steps, between MPI barriers; Palabos's internal statistics (averages it
+// gathers every step) are off, solid nodes are BounceBack cells of the dense block lattice (Palabos
 // updates every node), MLUPS = fluid nodes x steps / seconds for both codes.
 #include "flowrun/flow_case.hpp"
 #include "lbm/flow_solver.hpp"
