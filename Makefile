@@ -8,7 +8,8 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
-  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
+  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9 \
+  libplb-dev libopenmpi-dev
 
 .PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure shell-figures run install clean clean-results
 
