@@ -1,0 +1,95 @@
+#pragma once
+// Gradient assembly of a mesh energy term (triangles, hinges, edges) on all threads, with the
+// same bits on 1 thread or many: no two threads ever add into the same double, and every sum
+// has one fixed order.
+//
+// Two passes over fixed chunks, in one parallel region per call:
+//   1. element pass: a kernel writes each element's force on each of its `arity` corners into
+//      an element-force buffer, a structure of arrays (column 3k + r holds component r of the
+//      force on corner k, one double per element), so the kernel's stores are contiguous and
+//      its loop over elements has no scatter;
+//   2. gather pass: each vertex adds up its incident elements' slots in element order (a
+//      fixed list per vertex, built once) and adds the sum into g.
+// Chunks are handed out dynamically, so a thread slowed by another process gives its share
+// away. Small meshes run both passes on the calling thread with no OpenMP construct at all
+// (a fork/join would cost more than the work); the bits are the same either way. Energies
+// are summed per fixed chunk and the chunk sums added in chunk order.
+//
+// The buffers are mutable state of a const object: one object must not assemble from two
+// threads at once (each shell system owns its terms).
+#include "core/fixed_chunks.hpp"
+
+#include <omp.h>
+
+#include <vector>
+
+namespace cmp::shell {
+
+class ElementAssembly {
+ public:
+  ElementAssembly() = default;
+  // corners: `arity` vertex indices per element, element after element (all in [0, vertex_count)).
+  // Throws std::invalid_argument for an index outside the mesh or a buffer of 2^31 doubles or more.
+  ElementAssembly(const std::vector<int>& corners, int arity, long vertex_count);
+
+  long element_count() const { return elements_; }
+  // Corner k (0 .. arity-1) of every element: element_count() indices.
+  const int* corner(int k) const { return corners_.data() + k * elements_; }
+  // Column j = 3k + r of the element-force buffer: component r of dE/dx on corner k, per element.
+  double* column(int j) const { return buffer_.data() + j * elements_; }
+
+  // kernel(begin, end) fills the buffer's columns for elements [begin, end); then every
+  // vertex's sum is added into g (3 #V doubles).
+  template <class Kernel>
+  void assemble(Kernel&& kernel, double* g) const {
+    const int ec = element_chunks_, vc = vertex_chunks_;
+    const auto elements = [&](int c) { kernel(chunk_begin(elements_, ec, c), chunk_begin(elements_, ec, c + 1)); };
+    const auto vertices = [&](int c) { gather(chunk_begin(vertices_, vc, c), chunk_begin(vertices_, vc, c + 1), g); };
+    if (!parallel()) {
+      for (int c = 0; c < ec; ++c) elements(c);
+      for (int c = 0; c < vc; ++c) vertices(c);
+      return;
+    }
+#pragma omp parallel
+    {
+#pragma omp for schedule(dynamic, 1)
+      for (int c = 0; c < ec; ++c) elements(c);
+#pragma omp for schedule(dynamic, 1)
+      for (int c = 0; c < vc; ++c) vertices(c);
+    }
+  }
+
+  // The sum over the elements of partial(begin, end) (the sum over a range), chunk by chunk.
+  template <class Partial>
+  double sum(Partial&& partial) const {
+    const int ec = element_chunks_;
+    double* sums = chunk_sums_.data();
+    const auto chunk = [&](int c) { sums[c] = partial(chunk_begin(elements_, ec, c), chunk_begin(elements_, ec, c + 1)); };
+    if (!parallel()) {
+      for (int c = 0; c < ec; ++c) chunk(c);
+    } else {
+#pragma omp parallel for schedule(dynamic, 1)
+      for (int c = 0; c < ec; ++c) chunk(c);
+    }
+    double total = 0;
+    for (int c = 0; c < ec; ++c) total += sums[c];
+    return total;
+  }
+
+  // Elements per chunk, and the element count from which the passes run on all threads.
+  static constexpr long kChunkElements = 512;
+  static constexpr long kParallelElements = 2048;
+
+ private:
+  bool parallel() const { return elements_ >= kParallelElements && omp_get_max_threads() > 1 && !omp_in_parallel(); }
+  // Adds the sums of vertices [begin, end) into g.
+  void gather(long begin, long end, double* g) const;
+
+  long elements_ = 0, vertices_ = 0;
+  int element_chunks_ = 1, vertex_chunks_ = 1;
+  std::vector<int> corners_;        // arity columns of element_count() indices
+  std::vector<int> first_, slot_;  // vertex v's slots (3k element_count() + e) are slot_[first_[v] .. first_[v + 1])
+  mutable std::vector<double> buffer_, chunk_sums_;
+};
+
+}  // namespace cmp::shell
