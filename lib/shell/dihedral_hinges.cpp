@@ -59,11 +59,10 @@ struct HingeArrays {
   return cd > 0 ? sd * sd / (1.0 + cd) : 1.0 - cd;
 }
 
-[[gnu::target_clones("avx2", "default")]] void hinge_forces(const HingeArrays A, double* const* out, long begin,
+void hinge_forces(const HingeArrays A, double* const* out, long begin,
                                                             long end) {
-  double* F[12];  // local copies: the stores below cannot change them
-  for (int j = 0; j < 12; ++j) F[j] = out[j];
-#pragma omp simd
+  double* F[4];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 4; ++k) F[k] = out[k];
   for (long h = begin; h < end; ++h) {
     const HingeAngle H = hinge_cos_sin(A.x + 3 * A.q0[h], A.x + 3 * A.q1[h], A.x + 3 * A.q2[h], A.x + 3 * A.q3[h]);
     const double s = A.kappa[h] * (H.s * A.cos0[h] - H.c * A.sin0[h]);  // dE/dphi = kappa sin(phi - phi0)
@@ -72,10 +71,10 @@ struct HingeArrays {
     const double sl = -s * H.le * H.inv_n01, s2 = sl * H.n1, s3 = sl * H.n0;
     for (int r = 0; r < 3; ++r) {
       const double g2 = s2 * H.N0[r], g3 = s3 * H.N1[r];
-      F[r][h] = -((1.0 - t2) * g2 + (1.0 - t3) * g3);
-      F[3 + r][h] = -(t2 * g2 + t3 * g3);
-      F[6 + r][h] = g2;
-      F[9 + r][h] = g3;
+      F[0][3 * h + r] = -((1.0 - t2) * g2 + (1.0 - t3) * g3);
+      F[1][3 * h + r] = -(t2 * g2 + t3 * g3);
+      F[2][3 * h + r] = g2;
+      F[3][3 * h + r] = g3;
     }
   }
 }
@@ -148,8 +147,8 @@ void DihedralHinges::add_gradient(std::span<const double> x, std::span<double> g
   check_sizes(x, g);
   const HingeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), assembly_.corner(2), assembly_.corner(3),
                       kappa_.data(), cos0_.data(), sin0_.data()};
-  double* F[12];
-  for (int j = 0; j < 12; ++j) F[j] = assembly_.column(j);
+  double* F[4];
+  for (int k = 0; k < 4; ++k) F[k] = assembly_.corner_forces(k);
   assembly_.assemble([&](long begin, long end) { hinge_forces(A, F, begin, end); }, g.data());
 }
 

@@ -19,11 +19,10 @@ struct EdgeArrays {
   const double *rest, *k;
 };
 
-[[gnu::target_clones("avx2", "default")]] void spring_forces(const EdgeArrays A, double* const* out, long begin,
+void spring_forces(const EdgeArrays A, double* const* out, long begin,
                                                              long end) {
-  double* F[6];  // local copies: the stores below cannot change them
-  for (int j = 0; j < 6; ++j) F[j] = out[j];
-#pragma omp simd
+  double* F[2];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 2; ++k) F[k] = out[k];
   for (long e = begin; e < end; ++e) {
     const double* a = A.x + 3 * A.q0[e];
     const double* b = A.x + 3 * A.q1[e];
@@ -31,8 +30,8 @@ struct EdgeArrays {
     const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const double s = A.k[e] * (1.0 - A.rest[e] / l);  // dE/dl / l
     for (int r = 0; r < 3; ++r) {
-      F[r][e] = -s * d[r];
-      F[3 + r][e] = s * d[r];
+      F[0][3 * e + r] = -s * d[r];
+      F[1][3 * e + r] = s * d[r];
     }
   }
 }
@@ -122,8 +121,8 @@ double EdgeSprings::energy(std::span<const double> x) const {
 void EdgeSprings::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   const EdgeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), rest_.data(), k_.data()};
-  double* F[6];
-  for (int j = 0; j < 6; ++j) F[j] = assembly_.column(j);
+  double* F[2];
+  for (int k = 0; k < 2; ++k) F[k] = assembly_.corner_forces(k);
   assembly_.assemble([&](long begin, long end) { spring_forces(A, F, begin, end); }, g.data());
 }
 

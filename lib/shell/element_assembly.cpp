@@ -31,19 +31,18 @@ ElementAssembly::ElementAssembly(const std::vector<int>& corners, int arity, lon
   std::vector<int> next(first_.begin(), first_.end() - 1);
   for (long e = 0; e < elements_; ++e)
     for (int k = 0; k < arity; ++k)
-      slot_[next[corners[static_cast<std::size_t>(arity * e + k)]]++] = static_cast<int>(3 * k * elements_ + e);
+      slot_[next[corners[static_cast<std::size_t>(arity * e + k)]]++] = static_cast<int>(3 * (k * elements_ + e));
   buffer_.assign(static_cast<std::size_t>(3 * arity * elements_), 0.0);
   chunk_sums_.assign(static_cast<std::size_t>(element_chunks_), 0.0);
 }
 
 void ElementAssembly::gather(long begin, long end, double* g) const {
   const double* B = buffer_.data();
-  const long n = elements_;
   for (long v = begin; v < end; ++v) {
     double sx = 0, sy = 0, sz = 0;
     for (int k = first_[v]; k < first_[v + 1]; ++k) {
       const double* b = B + slot_[k];
-      sx += b[0], sy += b[n], sz += b[2 * n];
+      sx += b[0], sy += b[1], sz += b[2];
     }
     g[3 * v] += sx, g[3 * v + 1] += sy, g[3 * v + 2] += sz;
   }

@@ -5,11 +5,11 @@
 //
 // Two passes over fixed chunks, in one parallel region per call:
 //   1. element pass: a kernel writes each element's force on each of its `arity` corners into
-//      an element-force buffer, a structure of arrays (column 3k + r holds component r of the
-//      force on corner k, one double per element), so the kernel's stores are contiguous and
-//      its loop over elements has no scatter;
+//      an element-force buffer, one array per corner (3 doubles per element: the kernel's
+//      stores run in `arity` sequential streams, with no scatter);
 //   2. gather pass: each vertex adds up its incident elements' slots in element order (a
-//      fixed list per vertex, built once) and adds the sum into g.
+//      fixed list per vertex, built once; a slot is 3 consecutive doubles, one cache line)
+//      and adds the sum into g.
 // Chunks are handed out dynamically, so a thread slowed by another process gives its share
 // away. Small meshes run both passes on the calling thread with no OpenMP construct at all
 // (a fork/join would cost more than the work); the bits are the same either way. Energies
@@ -35,10 +35,10 @@ class ElementAssembly {
   long element_count() const { return elements_; }
   // Corner k (0 .. arity-1) of every element: element_count() indices.
   const int* corner(int k) const { return corners_.data() + k * elements_; }
-  // Column j = 3k + r of the element-force buffer: component r of dE/dx on corner k, per element.
-  double* column(int j) const { return buffer_.data() + j * elements_; }
+  // The element-force buffer of corner k: dE/dx on corner k of element e at [3e, 3e + 3).
+  double* corner_forces(int k) const { return buffer_.data() + 3 * k * elements_; }
 
-  // kernel(begin, end) fills the buffer's columns for elements [begin, end); then every
+  // kernel(begin, end) fills the corner forces of elements [begin, end); then every
   // vertex's sum is added into g (3 #V doubles).
   template <class Kernel>
   void assemble(Kernel&& kernel, double* g) const {
@@ -88,7 +88,7 @@ class ElementAssembly {
   long elements_ = 0, vertices_ = 0;
   int element_chunks_ = 1, vertex_chunks_ = 1;
   std::vector<int> corners_;        // arity columns of element_count() indices
-  std::vector<int> first_, slot_;  // vertex v's slots (3k element_count() + e) are slot_[first_[v] .. first_[v + 1])
+  std::vector<int> first_, slot_;  // vertex v's slots (3 (k element_count() + e)) are slot_[first_[v] .. first_[v + 1])
   mutable std::vector<double> buffer_, chunk_sums_;
 };
 

@@ -42,10 +42,9 @@ struct Strains {
   return s;
 }
 
-[[gnu::target_clones("avx2", "default")]] void svk_forces(const SvkArrays A, double* const* out, long begin, long end) {
-  double* F[9];  // local copies: the stores below cannot change them
-  for (int j = 0; j < 9; ++j) F[j] = out[j];
-#pragma omp simd
+void svk_forces(const SvkArrays A, double* const* out, long begin, long end) {
+  double* F[3];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 3; ++k) F[k] = out[k];
   for (long t = begin; t < end; ++t) {
     const Strains s = strains(A, t);
     const double* d = s.d;
@@ -55,9 +54,9 @@ struct Strains {
     const double w2 = A.k2[t] * d[2] + A.c1[t] * d[0] + A.c0[t] * d[1];
     // Edge i runs from corner i+1 to corner i+2: +w_i e_i on its head, -w_i e_i on its tail.
     for (int r = 0; r < 3; ++r) {
-      F[r][t] = w1 * s.e[1][r] - w2 * s.e[2][r];
-      F[3 + r][t] = w2 * s.e[2][r] - w0 * s.e[0][r];
-      F[6 + r][t] = w0 * s.e[0][r] - w1 * s.e[1][r];
+      F[0][3 * t + r] = w1 * s.e[1][r] - w2 * s.e[2][r];
+      F[1][3 * t + r] = w2 * s.e[2][r] - w0 * s.e[0][r];
+      F[2][3 * t + r] = w0 * s.e[0][r] - w1 * s.e[1][r];
     }
   }
 }
@@ -116,8 +115,8 @@ double SvkMembrane::energy(std::span<const double> x) const {
 void SvkMembrane::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   const SvkArrays A = arrays(assembly_, rest_l2_, k_, c_, x.data());
-  double* F[9];
-  for (int j = 0; j < 9; ++j) F[j] = assembly_.column(j);
+  double* F[3];
+  for (int k = 0; k < 3; ++k) F[k] = assembly_.corner_forces(k);
   assembly_.assemble([&](long begin, long end) { svk_forces(A, F, begin, end); }, g.data());
 }
 

@@ -21,20 +21,19 @@ struct FaceArrays {
   const double* turgor;  // per shell
 };
 
-[[gnu::target_clones("avx2", "default")]] void pressure_forces(const FaceArrays A, double* const* out, long begin,
+void pressure_forces(const FaceArrays A, double* const* out, long begin,
                                                                long end) {
-  double* F[9];  // local copies: the stores below cannot change them
-  for (int j = 0; j < 9; ++j) F[j] = out[j];
-#pragma omp simd
+  double* F[3];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 3; ++k) F[k] = out[k];
   for (long f = begin; f < end; ++f) {
     const double* P[3] = {A.x + 3 * A.q0[f], A.x + 3 * A.q1[f], A.x + 3 * A.q2[f]};
     const double s = -A.turgor[A.shell[f]] / 6.0;
     for (int i = 0; i < 3; ++i) {  // dV/dx_a = (b x c)/6, cyclic
       const double* b = P[(i + 1) % 3];
       const double* c = P[(i + 2) % 3];
-      F[3 * i][f] = s * (b[1] * c[2] - b[2] * c[1]);
-      F[3 * i + 1][f] = s * (b[2] * c[0] - b[0] * c[2]);
-      F[3 * i + 2][f] = s * (b[0] * c[1] - b[1] * c[0]);
+      F[i][3 * f + 0] = s * (b[1] * c[2] - b[2] * c[1]);
+      F[i][3 * f + 1] = s * (b[2] * c[0] - b[0] * c[2]);
+      F[i][3 * f + 2] = s * (b[0] * c[1] - b[1] * c[0]);
     }
   }
 }
@@ -100,8 +99,8 @@ void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g
   check_sizes(x, g);
   const FaceArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), assembly_.corner(2), face_shell_.data(),
                      turgor_.data()};
-  double* F[9];
-  for (int j = 0; j < 9; ++j) F[j] = assembly_.column(j);
+  double* F[3];
+  for (int k = 0; k < 3; ++k) F[k] = assembly_.corner_forces(k);
   assembly_.assemble([&](long begin, long end) { pressure_forces(A, F, begin, end); }, g.data());
 }
 
