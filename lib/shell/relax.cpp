@@ -1,6 +1,7 @@
 #include "shell/relax.hpp"
 
 #include "core/errors.hpp"
+#include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
 
 #include <cmath>
@@ -121,7 +122,9 @@ HeunResult heun_relax(ShellSystem& s, double dt, double damping, double relative
                       long max_steps) {
   HeunResult r;
   Eigen::VectorXd f;
-  for (;; ++r.steps) {
+  // One thread or all, whichever runs faster now (the force passes give the same bits either way).
+  ThreadGovernor governor;
+  for (;; ++r.steps, governor.tick()) {
     s.forces(s.x, f);
     r.residual = minimise::max_block_norm(f, 3) / force_scale;
     if (!std::isfinite(r.residual))
