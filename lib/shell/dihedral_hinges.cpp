@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "mesh/edge_topology.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -59,23 +60,58 @@ struct HingeArrays {
   return cd > 0 ? sd * sd / (1.0 + cd) : 1.0 - cd;
 }
 
-void hinge_forces(const HingeArrays A, double* const* out, long begin,
+// The force pass in tiles of kTile hinges: the corner positions are first copied into
+// unit-stride rows (row 3k + r: component r of corner k), so the arithmetic below, divisions
+// and square roots included, runs in vector lanes; each lane does exactly the operations of
+// hinge_cos_sin in the same order, so the bits do not depend on the lane count.
+constexpr int kTile = 64;
+
+[[gnu::always_inline]] inline void hinge_tile(const double* __restrict P, double* __restrict O,
+                                              const double* __restrict kappa, const double* __restrict cos0,
+                                              const double* __restrict sin0, int m) {
+  for (int l = 0; l < m; ++l) {
+    const auto p = [&](int row) { return P[row * kTile + l]; };
+    const double ex = p(3) - p(0), ey = p(4) - p(1), ez = p(5) - p(2);
+    const double ax = p(6) - p(0), ay = p(7) - p(1), az = p(8) - p(2);
+    const double bx = p(9) - p(0), by = p(10) - p(1), bz = p(11) - p(2);
+    const double n0x = ey * az - ez * ay, n0y = ez * ax - ex * az, n0z = ex * ay - ey * ax;
+    const double n1x = by * ez - bz * ey, n1y = bz * ex - bx * ez, n1z = bx * ey - by * ex;
+    const double mx = n0y * n1z - n0z * n1y, my = n0z * n1x - n0x * n1z, mz = n0x * n1y - n0y * n1x;
+    const double n0 = n0x * n0x + n0y * n0y + n0z * n0z, n1 = n1x * n1x + n1y * n1y + n1z * n1z;
+    const double e2 = ex * ex + ey * ey + ez * ez;
+    const double inv_e2 = 1.0 / e2, inv_n01 = 1.0 / (n0 * n1);
+    const double le = std::sqrt(e2), r = std::sqrt(inv_n01);
+    const double c = (n0x * n1x + n0y * n1y + n0z * n1z) * r;
+    const double sn = (mx * ex + my * ey + mz * ez) * (le * inv_e2) * r;
+    const double s = kappa[l] * (sn * cos0[l] - c * sin0[l]);  // dE/dphi = kappa sin(phi - phi0)
+    const double t2 = (ax * ex + ay * ey + az * ez) * inv_e2, t3 = (bx * ex + by * ey + bz * ez) * inv_e2;
+    // dphi/dx2 = -|e| N0/|N0|^2 = -|e|/(2 A0) n0, and likewise on x3 (1/n0 = n1/(n0 n1)).
+    const double sl = -s * le * inv_n01, s2 = sl * n1, s3 = sl * n0;
+    const double g2[3] = {s2 * n0x, s2 * n0y, s2 * n0z}, g3[3] = {s3 * n1x, s3 * n1y, s3 * n1z};
+    for (int q = 0; q < 3; ++q) {
+      O[q * kTile + l] = -((1.0 - t2) * g2[q] + (1.0 - t3) * g3[q]);
+      O[(3 + q) * kTile + l] = -(t2 * g2[q] + t3 * g3[q]);
+      O[(6 + q) * kTile + l] = g2[q];
+      O[(9 + q) * kTile + l] = g3[q];
+    }
+  }
+}
+
+[[gnu::target_clones("avx2", "default")]] void hinge_forces(const HingeArrays A, double* const* out, long begin,
                                                             long end) {
   double* F[4];  // local copies: the stores below cannot change them
   for (int k = 0; k < 4; ++k) F[k] = out[k];
-  for (long h = begin; h < end; ++h) {
-    const HingeAngle H = hinge_cos_sin(A.x + 3 * A.q0[h], A.x + 3 * A.q1[h], A.x + 3 * A.q2[h], A.x + 3 * A.q3[h]);
-    const double s = A.kappa[h] * (H.s * A.cos0[h] - H.c * A.sin0[h]);  // dE/dphi = kappa sin(phi - phi0)
-    const double t2 = dot(H.a, H.e) * H.inv_e2, t3 = dot(H.b, H.e) * H.inv_e2;  // the wings' positions along e
-    // dphi/dx2 = -|e| N0/|N0|^2 = -|e|/(2 A0) n0, and likewise on x3 (1/n0 = n1/(n0 n1)).
-    const double sl = -s * H.le * H.inv_n01, s2 = sl * H.n1, s3 = sl * H.n0;
-    for (int r = 0; r < 3; ++r) {
-      const double g2 = s2 * H.N0[r], g3 = s3 * H.N1[r];
-      F[0][3 * h + r] = -((1.0 - t2) * g2 + (1.0 - t3) * g3);
-      F[1][3 * h + r] = -(t2 * g2 + t3 * g3);
-      F[2][3 * h + r] = g2;
-      F[3][3 * h + r] = g3;
-    }
+  alignas(64) double P[12 * kTile], O[12 * kTile];
+  for (long t0 = begin; t0 < end; t0 += kTile) {
+    const int m = static_cast<int>(std::min<long>(kTile, end - t0));
+    const int* q[4] = {A.q0 + t0, A.q1 + t0, A.q2 + t0, A.q3 + t0};
+    for (int k = 0; k < 4; ++k)
+      for (int l = 0; l < m; ++l)
+        for (int r = 0; r < 3; ++r) P[(3 * k + r) * kTile + l] = A.x[3 * q[k][l] + r];
+    hinge_tile(P, O, A.kappa + t0, A.cos0 + t0, A.sin0 + t0, m);
+    for (int k = 0; k < 4; ++k)
+      for (int l = 0; l < m; ++l)
+        for (int r = 0; r < 3; ++r) F[k][3 * (t0 + l) + r] = O[(3 * k + r) * kTile + l];
   }
 }
 
