@@ -51,7 +51,8 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
   const double eps = 1e-7 * std::max(scale, 1e-300);
   Eigen::VectorXd fp(n), fm(n);
   double lambda = 0;
-  for (int it = 0; it < iterations; ++it) {
+  ThreadGovernor governor;  // one thread or all, whichever is faster now (same bits either way)
+  for (int it = 0; it < iterations; ++it, governor.tick()) {
     const double norm = v.norm();
     if (!(norm > 0)) break;
     v /= norm;
