@@ -60,12 +60,8 @@ struct HingeArrays {
   return cd > 0 ? sd * sd / (1.0 + cd) : 1.0 - cd;
 }
 
-// The force pass in tiles of kTile hinges: the corner positions are first copied into
-// unit-stride rows (row 3k + r: component r of corner k), so the arithmetic below, divisions
-// and square roots included, runs in vector lanes; each lane does exactly the operations of
-// hinge_cos_sin in the same order, so the bits do not depend on the lane count.
-constexpr int kTile = 64;
-
+// The force pass on one tile (element_assembly.hpp): each lane does exactly the operations of
+// hinge_cos_sin in the same order.
 [[gnu::always_inline]] inline void hinge_tile(const double* __restrict P, double* __restrict O,
                                               const double* __restrict kappa, const double* __restrict cos0,
                                               const double* __restrict sin0, int m) {
@@ -101,17 +97,13 @@ constexpr int kTile = 64;
                                                             long end) {
   double* F[4];  // local copies: the stores below cannot change them
   for (int k = 0; k < 4; ++k) F[k] = out[k];
+  const int* corners[4] = {A.q0, A.q1, A.q2, A.q3};
   alignas(64) double P[12 * kTile], O[12 * kTile];
   for (long t0 = begin; t0 < end; t0 += kTile) {
     const int m = static_cast<int>(std::min<long>(kTile, end - t0));
-    const int* q[4] = {A.q0 + t0, A.q1 + t0, A.q2 + t0, A.q3 + t0};
-    for (int k = 0; k < 4; ++k)
-      for (int l = 0; l < m; ++l)
-        for (int r = 0; r < 3; ++r) P[(3 * k + r) * kTile + l] = A.x[3 * q[k][l] + r];
+    load_tile<4>(A.x, corners, t0, m, P);
     hinge_tile(P, O, A.kappa + t0, A.cos0 + t0, A.sin0 + t0, m);
-    for (int k = 0; k < 4; ++k)
-      for (int l = 0; l < m; ++l)
-        for (int r = 0; r < 3; ++r) F[k][3 * (t0 + l) + r] = O[(3 * k + r) * kTile + l];
+    store_tile<4>(O, F, t0, m);
   }
 }
 

@@ -92,4 +92,26 @@ class ElementAssembly {
   mutable std::vector<double> buffer_, chunk_sums_;
 };
 
+// Tiles for vector lanes: a force pass copies the corner positions of up to kTile elements into
+// unit-stride rows (row 3k + r: component r of corner k), computes on the rows in a loop the
+// compiler vectorises (the same operations in every lane, so the same bits as one lane), and
+// copies the result rows back into the corner-force buffers.
+constexpr int kTile = 64;
+
+// P[(3k + r) kTile + l] = x[3 corner_k[t0 + l] + r] for the m elements from t0.
+template <int Arity>
+inline void load_tile(const double* x, const int* const* corners, long t0, int m, double* P) {
+  for (int k = 0; k < Arity; ++k)
+    for (int l = 0; l < m; ++l)
+      for (int r = 0; r < 3; ++r) P[(3 * k + r) * kTile + l] = x[3 * corners[k][t0 + l] + r];
+}
+
+// F[k][3 (t0 + l) + r] = O[(3k + r) kTile + l] for the m elements from t0.
+template <int Arity>
+inline void store_tile(const double* O, double* const* F, long t0, int m) {
+  for (int k = 0; k < Arity; ++k)
+    for (int l = 0; l < m; ++l)
+      for (int r = 0; r < 3; ++r) F[k][3 * (t0 + l) + r] = O[(3 * k + r) * kTile + l];
+}
+
 }  // namespace cmp::shell
