@@ -2,6 +2,9 @@
 // shell of 642, 2562 and 10242 vertices (SVK + hinge-uniform + turgor), on the threads given
 // by OMP_NUM_THREADS, and the time to inflate a 2562-vertex shell to equilibrium.
 // Prints "name,value,unit" rows.
+//   bench_shell                 the rows above
+//   bench_shell terms LEVEL     microseconds per add_gradient of each term, and per forces()
+//   bench_shell inflate LEVEL   one inflation to equilibrium (for perf and the threads-under-load table)
 #include "shell/relax.hpp"
 #include "shell/shell_model.hpp"
 
@@ -9,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 using namespace cmp;
 
@@ -16,29 +20,81 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-}  // namespace
 
-int main() {
+shell::ShellModel model() {
   shell::ShellModel m;
   m.bending = "hinge-uniform";
   m.pressure = "turgor";
   m.material = {25.0, 1.0 / 3.0, 0.1};
   m.load.turgor = 0.25;
+  return m;
+}
+
+mesh::TriMesh sphere(int level) { return spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, level, 2.5); }
+
+shell::RelaxParameters relax_parameters(const mesh::TriMesh& rest, const shell::ShellModel& m) {
+  shell::RelaxParameters rp;
+  rp.force_scale = shell::default_force_scale(rest, m.material.youngs_modulus, m.material.thickness);
+  rp.relative_tolerance = 1e-9;
+  return rp;
+}
+
+// Seconds per call of f, over enough calls for about 0.3 s.
+template <class F>
+double per_call(F&& f) {
+  long reps = 1;
+  for (;;) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long k = 0; k < reps; ++k) f();
+    const double sec = seconds_since(t0);
+    if (sec > 0.3) return sec / reps;
+    reps *= 2;
+  }
+}
+
+void terms(int level) {
+  const auto m = model();
+  const auto rest = sphere(level);
+  auto s = shell::make_shell_system(rest, m);
+  const Eigen::VectorXd x = 1.01 * s.x;
+  Eigen::VectorXd g(x.size()), f;
+  const long v = rest.V.rows();
+  for (const auto& t : s.terms()) {
+    const double sec = per_call([&] { t->add_gradient(shell::span_of(x), shell::span_of(g)); });
+    std::printf("gradient_%s_%ld,%.2f,us\n", t->name().c_str(), v, 1e6 * sec);
+  }
+  std::printf("forces_%ld,%.2f,us\n", v, 1e6 * per_call([&] { s.forces(x, f); }));
+}
+
+void inflate(int level) {
+  const auto m = model();
+  const auto rest = sphere(level);
+  auto s = shell::make_shell_system(rest, m);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = shell::relax(s, relax_parameters(rest, m));
+  std::printf("inflate_%ld,%.3f,s (%ld FIRE iterations)\n", static_cast<long>(rest.V.rows()), seconds_since(t0),
+              r.iterations);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "terms") return terms(std::stoi(argv[2])), 0;
+  if (argc == 3 && std::string(argv[1]) == "inflate") return inflate(std::stoi(argv[2])), 0;
+  if (argc != 1) {
+    std::fprintf(stderr, "usage: bench_shell [terms LEVEL | inflate LEVEL]\n");
+    return 2;
+  }
+  const auto m = model();
   for (int level : {4, 5, 6}) {
-    const auto rest = spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, level, 2.5);
+    const auto rest = sphere(level);
     auto s = shell::make_shell_system(rest, m);
     Eigen::VectorXd x = 1.01 * s.x, f;
-    const long reps = 20000000 / rest.F.rows();
-    auto t0 = std::chrono::steady_clock::now();
-    for (long k = 0; k < reps; ++k) s.forces(x, f);
-    const double per = seconds_since(t0) / reps;
+    const double per = per_call([&] { s.forces(x, f); });
     std::printf("force_evaluations_%ld,%.1f,1/s\n", static_cast<long>(rest.V.rows()), 1.0 / per);
     std::printf("triangle_forces_%ld,%.3g,1/s\n", static_cast<long>(rest.V.rows()), rest.F.rows() / per);
-    shell::RelaxParameters rp;
-    rp.force_scale = shell::default_force_scale(rest, m.material.youngs_modulus, m.material.thickness);
-    rp.relative_tolerance = 1e-9;
-    t0 = std::chrono::steady_clock::now();
-    const auto r = shell::relax(s, rp);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = shell::relax(s, relax_parameters(rest, m));
     const double sec = seconds_since(t0);
     std::printf("fire_iterations_per_s_%ld,%.1f,1/s\n", static_cast<long>(rest.V.rows()), r.iterations / sec);
     if (level == 5) std::printf("inflate_2562_to_equilibrium,%.3f,s (%ld FIRE iterations)\n", sec, r.iterations);

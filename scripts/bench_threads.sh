@@ -21,6 +21,7 @@ cases=(
   "rndmesh_seeds|rndmesh random -n 300 --seeds 1:4|$bin/rndmesh random -n 300 --seeds 1:4 --threads {T} -q -o $work/m_{seed}.off"
   "lbflow_cluster|lbflow on the cluster of a jammed packing of 50 spheres, delta 0.04, M = 1, 600 steps|$bin/lbflow $work/cluster.vtk --refine 1 --max-steps 600 --threads {T} -q -o /dev/null || true"
   "jam2d_sweep|jam2d sweep --box 8 --seeds 1:4 (jamming, 4 colonies)|$bin/jam2d sweep --box 8 --seeds 1:4 --threads {T} -q > /dev/null"
+  "shell_inflate_2562|shellpack shell: inflate a 2562-vertex shell (SVK + hinge-uniform + turgor) to equilibrium|OMP_NUM_THREADS={T} $bench/bench_shell inflate 5"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )
 

@@ -14,9 +14,15 @@
 // The gradient of phi is that of B.41-B.44: |e|/(2A) n on the two wing vertices, and on the
 // hinge's ends the combination that keeps the total force and torque zero.
 // Boundary edges carry no hinge. The mesh must be consistently oriented.
+// Evaluated without trigonometric functions: cos phi and sin phi come from the normals
+// (N0 . N1 and (N0 x N1) . e/|e| over |N0||N1|), and cos and sin of the rest angle are stored,
+// so sin(phi - phi0) and 1 - cos(phi - phi0) (as sin^2/(1 + cos) where cos > 0: no
+// cancellation near rest) cost products only; a structure-of-arrays loop over the hinges on
+// all threads (element_assembly.hpp: the same bits for any thread count).
 // HingeStiffness::Uniform gives every hinge kappa_e = 2 kappa / sqrt(3): the normal-vector
 // springs of B.35, kappa~ sum (1 - n_a . n_b), with B.36's cylinder calibration
 // kappa = (sqrt(3)/2) kappa~, here with a curved rest state as in B.39.
+#include "shell/element_assembly.hpp"
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -51,6 +57,8 @@ class DihedralHinges final : public EnergyTerm {
   long vertex_count_;
   std::vector<int> quad_;
   std::vector<double> phi0_, kappa_;
+  std::vector<double> cos0_, sin0_;  // cos and sin of the rest angle, from the normals as at run time
+  ElementAssembly assembly_;
 };
 
 // The signed dihedral angle phi of the hinge (x0, x1, x2, x3) as above, in (-pi, pi].

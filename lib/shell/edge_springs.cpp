@@ -11,6 +11,42 @@ namespace cmp::shell {
 
 namespace {
 Eigen::Vector3d vertex(const mesh::TriMesh& m, int i) { return m.V.row(i).transpose(); }
+
+// The columns one pass reads and writes.
+struct EdgeArrays {
+  const double* x;
+  const int *q0, *q1;
+  const double *rest, *k;
+};
+
+void spring_forces(const EdgeArrays A, double* const* out, long begin,
+                                                             long end) {
+  double* F[2];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 2; ++k) F[k] = out[k];
+  for (long e = begin; e < end; ++e) {
+    const double* a = A.x + 3 * A.q0[e];
+    const double* b = A.x + 3 * A.q1[e];
+    const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double s = A.k[e] * (1.0 - A.rest[e] / l);  // dE/dl / l
+    for (int r = 0; r < 3; ++r) {
+      F[0][3 * e + r] = -s * d[r];
+      F[1][3 * e + r] = s * d[r];
+    }
+  }
+}
+
+double spring_energy(const EdgeArrays& A, long begin, long end) {
+  double sum = 0;
+  for (long e = begin; e < end; ++e) {
+    const double* a = A.x + 3 * A.q0[e];
+    const double* b = A.x + 3 * A.q1[e];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - A.rest[e];
+    sum += 0.5 * A.k[e] * stretch * stretch;
+  }
+  return sum;
+}
 }  // namespace
 
 std::vector<double> edge_spring_constants(const mesh::TriMesh& rest, const MaterialParameters& p,
@@ -73,38 +109,21 @@ EdgeSprings::EdgeSprings(const mesh::TriMesh& rest, const MaterialParameters& p,
     if (!(k_[e] > 0))
       throw UsageError(name_ + ": edge " + std::to_string(ends_[2 * e]) + "-" + std::to_string(ends_[2 * e + 1]) +
                        " gets a spring constant that is not positive (an obtuse rest triangle with nu > 0?)");
+  assembly_ = ElementAssembly(ends_, 2, vertex_count_);
 }
 
 double EdgeSprings::energy(std::span<const double> x) const {
   check_sizes(x);
-  const double* X = x.data();
-  const std::size_t ne = rest_.size();
-  double sum = 0;
-  for (std::size_t e = 0; e < ne; ++e) {
-    const double* a = X + 3 * ends_[2 * e];
-    const double* b = X + 3 * ends_[2 * e + 1];
-    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
-    const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - rest_[e];
-    sum += 0.5 * k_[e] * stretch * stretch;
-  }
-  return sum;
+  const EdgeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), rest_.data(), k_.data()};
+  return assembly_.sum([&](long begin, long end) { return spring_energy(A, begin, end); });
 }
 
 void EdgeSprings::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
-  const double* X = x.data();
-  double* G = g.data();
-  const std::size_t ne = rest_.size();
-  for (std::size_t e = 0; e < ne; ++e) {
-    const int i = ends_[2 * e], j = ends_[2 * e + 1];
-    const double* a = X + 3 * i;
-    const double* b = X + 3 * j;
-    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
-    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double s = k_[e] * (1.0 - rest_[e] / l);  // dE/dl / l
-    G[3 * j] += s * dx, G[3 * j + 1] += s * dy, G[3 * j + 2] += s * dz;
-    G[3 * i] -= s * dx, G[3 * i + 1] -= s * dy, G[3 * i + 2] -= s * dz;
-  }
+  const EdgeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), rest_.data(), k_.data()};
+  double* F[2];
+  for (int k = 0; k < 2; ++k) F[k] = assembly_.corner_forces(k);
+  assembly_.assemble([&](long begin, long end) { spring_forces(A, F, begin, end); }, g.data());
 }
 
 }  // namespace cmp::shell

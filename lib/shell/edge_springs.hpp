@@ -9,6 +9,9 @@
 //   VanGelder    k_e = sum over the rest triangles T holding e of
 //                Y/(1 + nu) A_T/|c|^2 + Y nu/(1 - nu^2) (|a|^2 + |b|^2 - |c|^2)/(8 A_T) (B.27)
 // Whatever the rule, a central-force spring mesh has nu = 1/3 (B.2.2).
+// Evaluated as a loop over the edges on all threads (element_assembly.hpp: the same bits for
+// any thread count).
+#include "shell/element_assembly.hpp"
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -41,6 +44,7 @@ class EdgeSprings final : public EnergyTerm {
   long vertex_count_;
   std::vector<int> ends_;
   std::vector<double> rest_, k_;
+  ElementAssembly assembly_;
 };
 
 }  // namespace cmp::shell

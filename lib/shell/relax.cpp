@@ -1,6 +1,7 @@
 #include "shell/relax.hpp"
 
 #include "core/errors.hpp"
+#include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
 
 #include <cmath>
@@ -50,7 +51,8 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
   const double eps = 1e-7 * std::max(scale, 1e-300);
   Eigen::VectorXd fp(n), fm(n);
   double lambda = 0;
-  for (int it = 0; it < iterations; ++it) {
+  ThreadGovernor governor;  // one thread or all, whichever is faster now (same bits either way)
+  for (int it = 0; it < iterations; ++it, governor.tick()) {
     const double norm = v.norm();
     if (!(norm > 0)) break;
     v /= norm;
@@ -121,7 +123,9 @@ HeunResult heun_relax(ShellSystem& s, double dt, double damping, double relative
                       long max_steps) {
   HeunResult r;
   Eigen::VectorXd f;
-  for (;; ++r.steps) {
+  // One thread or all, whichever runs faster now (the force passes give the same bits either way).
+  ThreadGovernor governor;
+  for (;; ++r.steps, governor.tick()) {
     s.forces(s.x, f);
     r.residual = minimise::max_block_norm(f, 3) / force_scale;
     if (!std::isfinite(r.residual))

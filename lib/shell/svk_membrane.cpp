@@ -6,11 +6,79 @@
 
 namespace cmp::shell {
 
+namespace {
+
+// The columns one pass reads and writes.
+struct SvkArrays {
+  const double* x;                         // state
+  const int *q0, *q1, *q2;                 // corners
+  const double *L0, *L1, *L2;              // rest squared lengths of the edges opposite the corners
+  const double *k0, *k1, *k2, *c0, *c1, *c2;
+};
+
+SvkArrays arrays(const ElementAssembly& a, const std::vector<double>& l2, const std::vector<double>& k,
+                 const std::vector<double>& c, const double* x) {
+  const long n = a.element_count();
+  return {x, a.corner(0), a.corner(1), a.corner(2), l2.data(), l2.data() + n, l2.data() + 2 * n,
+          k.data(), k.data() + n, k.data() + 2 * n, c.data(), c.data() + n, c.data() + 2 * n};
+}
+
+// Edge vectors e_i = (corner i+2) - (corner i+1) and d_i = |e_i|^2 - L_i^2 of triangle t.
+struct Strains {
+  double e[3][3], d[3];
+};
+
+[[gnu::always_inline]] inline Strains strains(const SvkArrays& A, long t) {
+  const long i0 = 3L * A.q0[t], i1 = 3L * A.q1[t], i2 = 3L * A.q2[t];
+  Strains s;
+  for (int r = 0; r < 3; ++r) {
+    const double p0 = A.x[i0 + r], p1 = A.x[i1 + r], p2 = A.x[i2 + r];
+    s.e[0][r] = p2 - p1;
+    s.e[1][r] = p0 - p2;
+    s.e[2][r] = p1 - p0;
+  }
+  const double L[3] = {A.L0[t], A.L1[t], A.L2[t]};
+  for (int i = 0; i < 3; ++i) s.d[i] = s.e[i][0] * s.e[i][0] + s.e[i][1] * s.e[i][1] + s.e[i][2] * s.e[i][2] - L[i];
+  return s;
+}
+
+void svk_forces(const SvkArrays A, double* const* out, long begin, long end) {
+  double* F[3];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 3; ++k) F[k] = out[k];
+  for (long t = begin; t < end; ++t) {
+    const Strains s = strains(A, t);
+    const double* d = s.d;
+    // dE/d(l_i^2), times 2 for d(l_i^2)/d(end) = 2 e_i.
+    const double w0 = A.k0[t] * d[0] + A.c2[t] * d[1] + A.c1[t] * d[2];
+    const double w1 = A.k1[t] * d[1] + A.c2[t] * d[0] + A.c0[t] * d[2];
+    const double w2 = A.k2[t] * d[2] + A.c1[t] * d[0] + A.c0[t] * d[1];
+    // Edge i runs from corner i+1 to corner i+2: +w_i e_i on its head, -w_i e_i on its tail.
+    for (int r = 0; r < 3; ++r) {
+      F[0][3 * t + r] = w1 * s.e[1][r] - w2 * s.e[2][r];
+      F[1][3 * t + r] = w2 * s.e[2][r] - w0 * s.e[0][r];
+      F[2][3 * t + r] = w0 * s.e[0][r] - w1 * s.e[1][r];
+    }
+  }
+}
+
+double svk_energy(const SvkArrays& A, long begin, long end) {
+  double sum = 0;
+  for (long t = begin; t < end; ++t) {
+    const Strains s = strains(A, t);
+    const double* d = s.d;
+    sum += 0.25 * (A.k0[t] * d[0] * d[0] + A.k1[t] * d[1] * d[1] + A.k2[t] * d[2] * d[2]) +
+           0.5 * (A.c0[t] * d[1] * d[2] + A.c1[t] * d[2] * d[0] + A.c2[t] * d[0] * d[1]);
+  }
+  return sum;
+}
+
+}  // namespace
+
 SvkMembrane::SvkMembrane(const mesh::TriMesh& rest, const MaterialParameters& p) : vertex_count_(rest.V.rows()) {
   validate(p, "svk");
   check_rest_mesh(rest, "svk");
   const Eigen::Index nf = rest.F.rows();
-  corners_.resize(3 * nf);
+  std::vector<int> corners(3 * nf);
   rest_l2_.resize(3 * nf);
   k_.resize(3 * nf);
   c_.resize(3 * nf);
@@ -18,7 +86,7 @@ SvkMembrane::SvkMembrane(const mesh::TriMesh& rest, const MaterialParameters& p)
   for (Eigen::Index f = 0; f < nf; ++f) {
     Eigen::Vector3d P[3];
     for (int i = 0; i < 3; ++i) {
-      corners_[3 * f + i] = rest.F(f, i);
+      corners[3 * f + i] = rest.F(f, i);
       P[i] = rest.V.row(rest.F(f, i)).transpose();
     }
     const double A = 0.5 * (P[1] - P[0]).cross(P[2] - P[0]).norm();
@@ -26,68 +94,30 @@ SvkMembrane::SvkMembrane(const mesh::TriMesh& rest, const MaterialParameters& p)
     for (int i = 0; i < 3; ++i) {
       const Eigen::Vector3d u = P[(i + 1) % 3] - P[i], v = P[(i + 2) % 3] - P[i];
       cot[i] = u.dot(v) / u.cross(v).norm();  // cot of the rest angle at corner i
-      rest_l2_[3 * f + i] = (P[(i + 2) % 3] - P[(i + 1) % 3]).squaredNorm();
+      rest_l2_[i * nf + f] = (P[(i + 2) % 3] - P[(i + 1) % 3]).squaredNorm();
     }
     const double scale = Y / (16.0 * (1.0 - nu * nu) * A);
     for (int i = 0; i < 3; ++i) {
       const int a = (i + 1) % 3, b = (i + 2) % 3;
-      k_[3 * f + i] = scale * (2.0 * cot[i] * cot[i] + 1.0 - nu);
-      c_[3 * f + i] = scale * (2.0 * cot[a] * cot[b] + nu - 1.0);
+      k_[i * nf + f] = scale * (2.0 * cot[i] * cot[i] + 1.0 - nu);
+      c_[i * nf + f] = scale * (2.0 * cot[a] * cot[b] + nu - 1.0);
     }
   }
+  assembly_ = ElementAssembly(corners, 3, vertex_count_);
 }
 
 double SvkMembrane::energy(std::span<const double> x) const {
   check_sizes(x);
-  const double* X = x.data();
-  const std::size_t nf = corners_.size() / 3;
-  double sum = 0;
-  for (std::size_t f = 0; f < nf; ++f) {
-    const int* q = &corners_[3 * f];
-    double d[3];
-    for (int i = 0; i < 3; ++i) {
-      const double* u = X + 3 * q[(i + 1) % 3];
-      const double* v = X + 3 * q[(i + 2) % 3];
-      const double dx = v[0] - u[0], dy = v[1] - u[1], dz = v[2] - u[2];
-      d[i] = dx * dx + dy * dy + dz * dz - rest_l2_[3 * f + i];
-    }
-    const double* k = &k_[3 * f];
-    const double* c = &c_[3 * f];
-    sum += 0.25 * (k[0] * d[0] * d[0] + k[1] * d[1] * d[1] + k[2] * d[2] * d[2]) +
-           0.5 * (c[0] * d[1] * d[2] + c[1] * d[2] * d[0] + c[2] * d[0] * d[1]);
-  }
-  return sum;
+  const SvkArrays A = arrays(assembly_, rest_l2_, k_, c_, x.data());
+  return assembly_.sum([&](long begin, long end) { return svk_energy(A, begin, end); });
 }
 
 void SvkMembrane::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
-  const double* X = x.data();
-  double* G = g.data();
-  const std::size_t nf = corners_.size() / 3;
-  for (std::size_t f = 0; f < nf; ++f) {
-    const int* q = &corners_[3 * f];
-    double e[3][3], d[3];
-    for (int i = 0; i < 3; ++i) {
-      const double* u = X + 3 * q[(i + 1) % 3];
-      const double* v = X + 3 * q[(i + 2) % 3];
-      for (int r = 0; r < 3; ++r) e[i][r] = v[r] - u[r];
-      d[i] = e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2] - rest_l2_[3 * f + i];
-    }
-    const double* k = &k_[3 * f];
-    const double* c = &c_[3 * f];
-    // dE/d(l_i^2), times 2 for d(l_i^2)/d(end) = 2 e_i.
-    const double w[3] = {k[0] * d[0] + c[2] * d[1] + c[1] * d[2],  //
-                         k[1] * d[1] + c[2] * d[0] + c[0] * d[2],  //
-                         k[2] * d[2] + c[1] * d[0] + c[0] * d[1]};
-    for (int i = 0; i < 3; ++i) {
-      double* gu = G + 3 * q[(i + 1) % 3];
-      double* gv = G + 3 * q[(i + 2) % 3];
-      for (int r = 0; r < 3; ++r) {
-        gv[r] += w[i] * e[i][r];
-        gu[r] -= w[i] * e[i][r];
-      }
-    }
-  }
+  const SvkArrays A = arrays(assembly_, rest_l2_, k_, c_, x.data());
+  double* F[3];
+  for (int k = 0; k < 3; ++k) F[k] = assembly_.corner_forces(k);
+  assembly_.assemble([&](long begin, long end) { svk_forces(A, F, begin, end); }, g.data());
 }
 
 }  // namespace cmp::shell

@@ -9,6 +9,9 @@
 // This equals A times the energy density of B.28, (lambda/2)(tr G)^2 + mu tr(G^2) of the
 // Green-Lagrange strain G, with the 2D Lame constants lambda = Y nu/(1 - nu^2) and
 // mu = Y/(2 (1 + nu)), Y = E t (B.29's mu/2 is a misprint). Exact at any strain.
+// Evaluated as a structure-of-arrays loop over the triangles on all threads
+// (element_assembly.hpp: the same bits for any thread count).
+#include "shell/element_assembly.hpp"
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -28,10 +31,11 @@ class SvkMembrane final : public EnergyTerm {
   long vertex_count() const override { return vertex_count_; }
 
  private:
-  // Per triangle, 3 entries each: corners, rest squared lengths L_i^2, tensile k_i, and the
-  // angular c of the pair opposite each index (c[0] for the pair {1, 2}, and so on).
+  // Per triangle (columns of #F doubles: column i of each array at i #F): rest squared
+  // lengths L_i^2, tensile k_i, and the angular c of the pair opposite each index (c[0] for
+  // the pair {1, 2}, and so on). The corners are the assembly's.
   long vertex_count_;
-  std::vector<int> corners_;
+  ElementAssembly assembly_;
   std::vector<double> rest_l2_, k_, c_;
 };
 

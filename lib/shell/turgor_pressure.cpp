@@ -14,6 +14,30 @@ namespace {
 inline double triple(const double* a, const double* b, const double* c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
+// The columns one gradient pass reads and writes.
+struct FaceArrays {
+  const double* x;
+  const int *q0, *q1, *q2, *shell;
+  const double* turgor;  // per shell
+};
+
+void pressure_forces(const FaceArrays A, double* const* out, long begin,
+                                                               long end) {
+  double* F[3];  // local copies: the stores below cannot change them
+  for (int k = 0; k < 3; ++k) F[k] = out[k];
+  for (long f = begin; f < end; ++f) {
+    const double* P[3] = {A.x + 3 * A.q0[f], A.x + 3 * A.q1[f], A.x + 3 * A.q2[f]};
+    const double s = -A.turgor[A.shell[f]] / 6.0;
+    for (int i = 0; i < 3; ++i) {  // dV/dx_a = (b x c)/6, cyclic
+      const double* b = P[(i + 1) % 3];
+      const double* c = P[(i + 2) % 3];
+      F[i][3 * f + 0] = s * (b[1] * c[2] - b[2] * c[1]);
+      F[i][3 * f + 1] = s * (b[2] * c[0] - b[0] * c[2]);
+      F[i][3 * f + 2] = s * (b[0] * c[1] - b[1] * c[0]);
+    }
+  }
+}
+
 }  // namespace
 
 double signed_volume(std::span<const double> x, const std::vector<int>& corners) {
@@ -46,6 +70,7 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
   face_shell_ = shells.face_shell;
   turgor_.assign(static_cast<std::size_t>(std::max(shells.shell_count, 1)), p.turgor);
   target_ = volumes(std::span<const double>(rest.V.data(), rest.V.size()));
+  assembly_ = ElementAssembly(corners_, 3, vertex_count_);
   for (std::size_t s = 0; s < target_.size(); ++s)
     if (!(target_[s] > 0))
       throw UsageError(style + ": the faces are oriented inward (shell " + std::to_string(s) + ": signed volume " +
@@ -72,21 +97,11 @@ double TurgorPressure::energy(std::span<const double> x) const {
 
 void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
-  const double* X = x.data();
-  double* G = g.data();
-  const std::size_t nf = face_shell_.size();
-  for (std::size_t f = 0; f < nf; ++f) {
-    const int* q = &corners_[3 * f];
-    const double s = -turgor_[face_shell_[f]] / 6.0;
-    for (int i = 0; i < 3; ++i) {  // dV/dx_a = (b x c)/6, cyclic
-      const double* b = X + 3 * q[(i + 1) % 3];
-      const double* c = X + 3 * q[(i + 2) % 3];
-      double* ga = G + 3 * q[i];
-      ga[0] += s * (b[1] * c[2] - b[2] * c[1]);
-      ga[1] += s * (b[2] * c[0] - b[0] * c[2]);
-      ga[2] += s * (b[0] * c[1] - b[1] * c[0]);
-    }
-  }
+  const FaceArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), assembly_.corner(2), face_shell_.data(),
+                     turgor_.data()};
+  double* F[3];
+  for (int k = 0; k < 3; ++k) F[k] = assembly_.corner_forces(k);
+  assembly_.assemble([&](long begin, long end) { pressure_forces(A, F, begin, end); }, g.data());
 }
 
 void TurgorPressure::set_turgor(double pi) {

@@ -16,6 +16,9 @@
 //     V0_s default to the rest volumes; a driver that inflates first sets them to the
 //     inflated ones. A shell at Pi = 0 stays at 0 under this rule (as in the thesis, which
 //     starts it from the inflated state).
+// The gradient is a loop over the faces on all threads (element_assembly.hpp: the same bits
+// for any thread count); volumes and the energy are summed face by face in order.
+#include "shell/element_assembly.hpp"
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -64,6 +67,7 @@ class TurgorPressure final : public EnergyTerm {
   long vertex_count_;
   std::vector<int> corners_, face_shell_;
   std::vector<double> turgor_, target_;
+  ElementAssembly assembly_;
 };
 
 }  // namespace cmp::shell

@@ -1,0 +1,117 @@
+#pragma once
+// Gradient assembly of a mesh energy term (triangles, hinges, edges) on all threads, with the
+// same bits on 1 thread or many: no two threads ever add into the same double, and every sum
+// has one fixed order.
+//
+// Two passes over fixed chunks, in one parallel region per call:
+//   1. element pass: a kernel writes each element's force on each of its `arity` corners into
+//      an element-force buffer, one array per corner (3 doubles per element: the kernel's
+//      stores run in `arity` sequential streams, with no scatter);
+//   2. gather pass: each vertex adds up its incident elements' slots in element order (a
+//      fixed list per vertex, built once; a slot is 3 consecutive doubles, one cache line)
+//      and adds the sum into g.
+// Chunks are handed out dynamically, so a thread slowed by another process gives its share
+// away. Small meshes run both passes on the calling thread with no OpenMP construct at all
+// (a fork/join would cost more than the work); the bits are the same either way. Energies
+// are summed per fixed chunk and the chunk sums added in chunk order.
+//
+// The buffers are mutable state of a const object: one object must not assemble from two
+// threads at once (each shell system owns its terms).
+#include "core/fixed_chunks.hpp"
+
+#include <omp.h>
+
+#include <vector>
+
+namespace cmp::shell {
+
+class ElementAssembly {
+ public:
+  ElementAssembly() = default;
+  // corners: `arity` vertex indices per element, element after element (all in [0, vertex_count)).
+  // Throws std::invalid_argument for an index outside the mesh or a buffer of 2^31 doubles or more.
+  ElementAssembly(const std::vector<int>& corners, int arity, long vertex_count);
+
+  long element_count() const { return elements_; }
+  // Corner k (0 .. arity-1) of every element: element_count() indices.
+  const int* corner(int k) const { return corners_.data() + k * elements_; }
+  // The element-force buffer of corner k: dE/dx on corner k of element e at [3e, 3e + 3).
+  double* corner_forces(int k) const { return buffer_.data() + 3 * k * elements_; }
+
+  // kernel(begin, end) fills the corner forces of elements [begin, end); then every
+  // vertex's sum is added into g (3 #V doubles).
+  template <class Kernel>
+  void assemble(Kernel&& kernel, double* g) const {
+    const int ec = element_chunks_, vc = vertex_chunks_;
+    const auto elements = [&](int c) { kernel(chunk_begin(elements_, ec, c), chunk_begin(elements_, ec, c + 1)); };
+    const auto vertices = [&](int c) { gather(chunk_begin(vertices_, vc, c), chunk_begin(vertices_, vc, c + 1), g); };
+    if (!parallel()) {
+      for (int c = 0; c < ec; ++c) elements(c);
+      for (int c = 0; c < vc; ++c) vertices(c);
+      return;
+    }
+#pragma omp parallel
+    {
+#pragma omp for schedule(dynamic, 1)
+      for (int c = 0; c < ec; ++c) elements(c);
+#pragma omp for schedule(dynamic, 1)
+      for (int c = 0; c < vc; ++c) vertices(c);
+    }
+  }
+
+  // The sum over the elements of partial(begin, end) (the sum over a range), chunk by chunk.
+  template <class Partial>
+  double sum(Partial&& partial) const {
+    const int ec = element_chunks_;
+    double* sums = chunk_sums_.data();
+    const auto chunk = [&](int c) { sums[c] = partial(chunk_begin(elements_, ec, c), chunk_begin(elements_, ec, c + 1)); };
+    if (!parallel()) {
+      for (int c = 0; c < ec; ++c) chunk(c);
+    } else {
+#pragma omp parallel for schedule(dynamic, 1)
+      for (int c = 0; c < ec; ++c) chunk(c);
+    }
+    double total = 0;
+    for (int c = 0; c < ec; ++c) total += sums[c];
+    return total;
+  }
+
+  // Elements per chunk, and the element count from which the passes run on all threads.
+  static constexpr long kChunkElements = 512;
+  static constexpr long kParallelElements = 2048;
+
+ private:
+  bool parallel() const { return elements_ >= kParallelElements && omp_get_max_threads() > 1 && !omp_in_parallel(); }
+  // Adds the sums of vertices [begin, end) into g.
+  void gather(long begin, long end, double* g) const;
+
+  long elements_ = 0, vertices_ = 0;
+  int element_chunks_ = 1, vertex_chunks_ = 1;
+  std::vector<int> corners_;        // arity columns of element_count() indices
+  std::vector<int> first_, slot_;  // vertex v's slots (3 (k element_count() + e)) are slot_[first_[v] .. first_[v + 1])
+  mutable std::vector<double> buffer_, chunk_sums_;
+};
+
+// Tiles for vector lanes: a force pass copies the corner positions of up to kTile elements into
+// unit-stride rows (row 3k + r: component r of corner k), computes on the rows in a loop the
+// compiler vectorises (the same operations in every lane, so the same bits as one lane), and
+// copies the result rows back into the corner-force buffers.
+constexpr int kTile = 64;
+
+// P[(3k + r) kTile + l] = x[3 corner_k[t0 + l] + r] for the m elements from t0.
+template <int Arity>
+inline void load_tile(const double* x, const int* const* corners, long t0, int m, double* P) {
+  for (int k = 0; k < Arity; ++k)
+    for (int l = 0; l < m; ++l)
+      for (int r = 0; r < 3; ++r) P[(3 * k + r) * kTile + l] = x[3 * corners[k][t0 + l] + r];
+}
+
+// F[k][3 (t0 + l) + r] = O[(3k + r) kTile + l] for the m elements from t0.
+template <int Arity>
+inline void store_tile(const double* O, double* const* F, long t0, int m) {
+  for (int k = 0; k < Arity; ++k)
+    for (int l = 0; l < m; ++l)
+      for (int r = 0; r < 3; ++r) F[k][3 * (t0 + l) + r] = O[(3 * k + r) * kTile + l];
+}
+
+}  // namespace cmp::shell
