@@ -15,6 +15,7 @@
 #include "lbm/layout.hpp"
 
 #include <cstdint>
+#include <type_traits>
 
 namespace cmp::lbm::kernel {
 
@@ -78,6 +79,19 @@ template <int B, bool kForce, class Relax>
   }
 }
 
+// A stored value to f_q and back (lbm/layout.hpp: float slots hold f_q - w_q; q is a constant
+// in every unrolled loop, so double storage costs nothing).
+template <class Real>
+[[gnu::always_inline]] inline double widen(Real v, int q) {
+  if constexpr (std::is_same_v<Real, float>) return static_cast<double>(v) + stored_offset<Real>(q);
+  else return v;
+}
+template <class Real>
+[[gnu::always_inline]] inline Real narrow(double f, int q) {
+  if constexpr (std::is_same_v<Real, float>) return static_cast<Real>(f - stored_offset<Real>(q));
+  else return f;
+}
+
 // Blocks ahead whose neighbour lines an odd step prefetches.
 inline constexpr int kPrefetchAhead = 4;
 
@@ -93,24 +107,24 @@ template <class Real, bool kOdd, bool kForce, class Relax>
     double f[kQ][B];
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
+        for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(own[B * q + b], q);
     } else {
       // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
       // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
       const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
       for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
-      for (int b = 0; b < B; ++b) f[0][b] = own[b];
+      for (int b = 0; b < B; ++b) f[0][b] = widen<Real>(own[b], 0);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
+        for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(F[link[B * (opposite(q) - 1) + b]], q);
     }
     collide_batch<B, kForce>(f, r.force, relax);
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = narrow<Real>(f[q][b], q);
     } else {
-      for (int b = 0; b < B; ++b) own[b] = static_cast<Real>(f[0][b]);
+      for (int b = 0; b < B; ++b) own[b] = narrow<Real>(f[0][b], 0);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = narrow<Real>(f[q][b], q);
     }
   }
 }
