@@ -106,15 +106,6 @@ struct FlowSolver::Impl {
   double nu = 0, grad_p = 0;
   int chunks = 1;
   std::uint64_t fp = 0;
-  // Thread governor (lib/core/thread_governor.hpp), kept for the solver's life: a run steps
-  // in calls of --check-every steps, and a governor made per call restarted on all threads
-  // and relearned each time. It ticks once per group of steps of about kTickUpdates node
-  // updates, so that its short probe epochs (5 ms) time a few steps, not one: on a machine
-  // where another process holds a core, one step of two threads may wait a whole time slice
-  // for the descheduled one, and the governor then falls back to one thread.
-  static constexpr double kTickUpdates = 2e6;
-  std::unique_ptr<ThreadGovernor> governor;
-  long steps_per_tick = 1, since_tick = 0;
 
   long chunk_start(int c) const { return chunk_begin(stride, chunks, c, kBatch); }
 
@@ -442,18 +433,11 @@ FlowSolver& FlowSolver::operator=(FlowSolver&&) noexcept = default;
 
 void FlowSolver::step(long n) {
   if (n <= 0) return;
-  Impl& m = *impl_;
-  if (!m.governor) {
-    m.governor = std::make_unique<ThreadGovernor>();
-    m.steps_per_tick = std::max(1L, static_cast<long>(Impl::kTickUpdates / static_cast<double>(m.fluid)));
-  }
+  ThreadGovernor governor;
   for (long k = 0; k < n; ++k) {
-    if (m.settings.precision == Precision::kFloat) m.step_once<float>();
-    else m.step_once<double>();
-    if (++m.since_tick >= m.steps_per_tick) {
-      m.since_tick = 0;
-      m.governor->tick();
-    }
+    if (impl_->settings.precision == Precision::kFloat) impl_->step_once<float>();
+    else impl_->step_once<double>();
+    governor.tick();
   }
 }
 
