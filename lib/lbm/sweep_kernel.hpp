@@ -15,6 +15,7 @@
 #include "lbm/layout.hpp"
 
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 namespace cmp::lbm::kernel {
@@ -92,6 +93,39 @@ template <class Real>
   else return f;
 }
 
+// One direction's line of a block (kBatch values) to f_q and back; float converts 4 lanes at a
+// time (left to itself the compiler converted lane by lane).
+template <class Real>
+[[gnu::always_inline]] inline void widen_line(const Real* src, int q, double* dst) {
+  if constexpr (std::is_same_v<Real, float>) {
+    typedef float F4 __attribute__((vector_size(16)));
+    typedef double D4 __attribute__((vector_size(32)));
+    for (int h = 0; h < kBatch; h += 4) {
+      F4 x;
+      std::memcpy(&x, src + h, sizeof x);
+      const D4 y = __builtin_convertvector(x, D4) + stored_offset<Real>(q);
+      std::memcpy(dst + h, &y, sizeof y);
+    }
+  } else {
+    for (int b = 0; b < kBatch; ++b) dst[b] = src[b];
+  }
+}
+template <class Real>
+[[gnu::always_inline]] inline void narrow_line(const double* src, int q, Real* dst) {
+  if constexpr (std::is_same_v<Real, float>) {
+    typedef float F4 __attribute__((vector_size(16)));
+    typedef double D4 __attribute__((vector_size(32)));
+    for (int h = 0; h < kBatch; h += 4) {
+      D4 x;
+      std::memcpy(&x, src + h, sizeof x);
+      const F4 y = __builtin_convertvector(x - stored_offset<Real>(q), F4);
+      std::memcpy(dst + h, &y, sizeof y);
+    }
+  } else {
+    for (int b = 0; b < kBatch; ++b) dst[b] = src[b];
+  }
+}
+
 // Blocks ahead whose neighbour lines an odd step prefetches.
 inline constexpr int kPrefetchAhead = 4;
 
@@ -106,8 +140,7 @@ template <class Real, bool kOdd, bool kForce, class Relax>
     const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
     double f[kQ][B];
     if constexpr (!kOdd) {
-      for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(own[B * q + b], q);
+      for (int q = 0; q < kQ; ++q) widen_line(own + B * q, q, f[q]);
     } else {
       // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
       // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
@@ -119,8 +152,7 @@ template <class Real, bool kOdd, bool kForce, class Relax>
     }
     collide_batch<B, kForce>(f, r.force, relax);
     if constexpr (!kOdd) {
-      for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = narrow<Real>(f[q][b], q);
+      for (int q = 0; q < kQ; ++q) narrow_line(f[q], q, own + B * opposite(q));
     } else {
       for (int b = 0; b < B; ++b) own[b] = narrow<Real>(f[0][b], 0);
       for (int q = 1; q < kQ; ++q)
