@@ -95,15 +95,15 @@ template <class Real>
 
 // One direction's line of a block (kBatch values) to f_q and back; float converts 4 lanes at a
 // time (left to itself the compiler converted lane by lane).
+typedef float Float4 __attribute__((vector_size(16)));
+typedef double Double4 __attribute__((vector_size(32)));
 template <class Real>
 [[gnu::always_inline]] inline void widen_line(const Real* src, int q, double* dst) {
   if constexpr (std::is_same_v<Real, float>) {
-    typedef float F4 __attribute__((vector_size(16)));
-    typedef double D4 __attribute__((vector_size(32)));
     for (int h = 0; h < kBatch; h += 4) {
-      F4 x;
+      Float4 x;
       std::memcpy(&x, src + h, sizeof x);
-      const D4 y = __builtin_convertvector(x, D4) + stored_offset<Real>(q);
+      const Double4 y = __builtin_convertvector(x, Double4) + stored_offset<Real>(q);
       std::memcpy(dst + h, &y, sizeof y);
     }
   } else {
@@ -113,12 +113,10 @@ template <class Real>
 template <class Real>
 [[gnu::always_inline]] inline void narrow_line(const double* src, int q, Real* dst) {
   if constexpr (std::is_same_v<Real, float>) {
-    typedef float F4 __attribute__((vector_size(16)));
-    typedef double D4 __attribute__((vector_size(32)));
     for (int h = 0; h < kBatch; h += 4) {
-      D4 x;
+      Double4 x;
       std::memcpy(&x, src + h, sizeof x);
-      const F4 y = __builtin_convertvector(x - stored_offset<Real>(q), F4);
+      const Float4 y = __builtin_convertvector(x - stored_offset<Real>(q), Float4);
       std::memcpy(dst + h, &y, sizeof y);
     }
   } else {
