@@ -1,7 +1,9 @@
 // lbflow's lattice Boltzmann core for make bench and the README's validation table:
-//   bench_lbm speed N THREADS [STYLE] [STEPS]  MLUPS of a dense N^3 periodic box and of a porous
+//   bench_lbm speed N THREADS [STYLE] [STEPS] [double|float]
+//                                              MLUPS of a dense N^3 periodic box and of a porous
 //                                              N^3 box (random overlapping spheres, porosity ~0.35),
-//                                              beside a STREAM-style triad measured in the same run
+//                                              beside a STREAM-style triad measured in the same run,
+//                                              and of the even and odd AA steps alone
 //   bench_lbm sphere-array [N...]              kappa of the simple cubic sphere array against
 //                                              Zick & Homsy (1982) for several solid fractions and
 //                                              resolutions, half-way vs interpolated bounce-back
@@ -70,14 +72,15 @@ PoreLattice porous_box(int n, double target) {
   return p;
 }
 
-int speed(int n, int threads, const std::string& style, long steps) {
-  std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound\n");
+int speed(int n, int threads, const std::string& style, long steps, bool f32) {
+  std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound,even_mlups,odd_mlups,precision\n");
   const double bw = triad_gbs(threads);
   for (int porous = 0; porous < 2; ++porous) {
     const PoreLattice p = porous ? porous_box(n, 0.35) : open_box(n, n, n);
     FlowSettings s;
     s.collision = style;
     s.driving = porous ? Driving::kPressure : Driving::kBodyForce;
+    s.precision = f32 ? Precision::kFloat : Precision::kDouble;
     omp_set_num_threads(threads);
     FlowSolver solver(p, s);
     solver.step(2);  // first touch, warm-up
@@ -88,11 +91,21 @@ int speed(int n, int threads, const std::string& style, long steps) {
       best = std::min(best, now() - t0);
     }
     const double mlups = solver.fluid_nodes() * static_cast<double>(steps) / best / 1e6;
+    // Each AA parity alone (best of 5 single steps): even steps stream a node's own block,
+    // odd steps go to the neighbours.
+    double parity_best[2] = {1e30, 1e30};
+    for (int rep = 0; rep < 10; ++rep) {
+      const int parity = static_cast<int>(solver.steps() & 1);
+      const double t0 = now();
+      solver.step(1);
+      parity_best[parity] = std::min(parity_best[parity], now() - t0);
+    }
+    const double parity_mlups[2] = {solver.fluid_nodes() / parity_best[0] / 1e6, solver.fluid_nodes() / parity_best[1] / 1e6};
     // Lower bound of the memory traffic of one update: 19 populations read and written.
     const double bound = bw * 1e9 / (2 * 19 * 8) / 1e6;
-    std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f\n", porous ? "porous" : "dense", n, p.porosity(),
-                threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw, bound,
-                mlups / bound);
+    std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f,%.2f,%.2f,%s\n", porous ? "porous" : "dense", n,
+                p.porosity(), threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw,
+                bound, mlups / bound, parity_mlups[0], parity_mlups[1], f32 ? "float" : "double");
   }
   return 0;
 }
@@ -127,13 +140,14 @@ int sphere_array(const std::vector<int>& sizes) {
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "speed" && argc >= 4)
-    return speed(std::atoi(argv[2]), std::atoi(argv[3]), argc > 4 ? argv[4] : "mrt", argc > 5 ? std::atol(argv[5]) : 20);
+    return speed(std::atoi(argv[2]), std::atoi(argv[3]), argc > 4 ? argv[4] : "mrt", argc > 5 ? std::atol(argv[5]) : 20,
+                 argc > 6 && std::string(argv[6]) == "float");
   if (mode == "sphere-array") {
     std::vector<int> sizes;
     for (int i = 2; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
     if (sizes.empty()) sizes = {16, 24, 32};
     return sphere_array(sizes);
   }
-  std::fprintf(stderr, "usage: bench_lbm speed N THREADS [STYLE] [STEPS] | sphere-array [N...]\n");
+  std::fprintf(stderr, "usage: bench_lbm speed N THREADS [STYLE] [STEPS] [double|float] | sphere-array [N...]\n");
   return 2;
 }

@@ -146,9 +146,9 @@ void FlowSolver::Impl::step_once() {
   for (const PressureNode& p : open) pressure_node(F, p, odd);
   const int parity = odd ? 1 : 0;
   for (const WallLink& w : walls)
-    F[w.target] = static_cast<Real>(w.k[0] * static_cast<double>(F[w.target]) +
-                                    w.k[1] * static_cast<double>(F[w.first[parity]]) +
-                                    w.k[2] * static_cast<double>(F[w.second[parity]]));
+    store_population(F.data(), w.target,
+                     w.k[0] * load_population(F.data(), w.target) + w.k[1] * load_population(F.data(), w.first[parity]) +
+                         w.k[2] * load_population(F.data(), w.second[parity]));
   ++steps;
 }
 
@@ -165,7 +165,7 @@ void FlowSolver::Impl::pressure_node(BigVector<Real>& F, const PressureNode& p, 
   std::size_t slots[kQ];
   for (int q = 0; q < kQ; ++q) {
     slots[q] = incoming_slot(q, p.node, after_odd);
-    f[q] = static_cast<double>(F[slots[q]]);
+    f[q] = load_population(F.data(), slots[q]);
   }
   double level = 0, out = 0, nb = 0, nc = 0;
   for (int q = 0; q < kQ; ++q) {
@@ -183,14 +183,14 @@ void FlowSolver::Impl::pressure_node(BigVector<Real>& F, const PressureNode& p, 
     if (velocity(q, a) * p.sign != 1) continue;
     const int cb = velocity(q, b), cc = velocity(q, c);
     const double v = cb == 0 && cc == 0 ? f[opposite(q)] + jn / 3 : f[opposite(q)] + jn / 6 - cb * nb - cc * nc;
-    F[slots[q]] = static_cast<Real>(v);
+    store_population(F.data(), slots[q], v);
   }
 }
 
 // Pre-collision populations of a node at the current step count.
 template <class Real>
 void FlowSolver::Impl::gather(const BigVector<Real>& F, long node, double f[kQ]) const {
-  for (int q = 0; q < kQ; ++q) f[q] = F[incoming_slot(q, node, (steps & 1) == 0)];
+  for (int q = 0; q < kQ; ++q) f[q] = load_population(F.data(), incoming_slot(q, node, (steps & 1) == 0));
 }
 
 template <class Real>
@@ -401,7 +401,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
                             static_cast<int>(g / m.n[0] / m.n[1])};
         rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
       }
-      for (int q = 0; q < kQ; ++q) F[pop_slot(q, i)] = static_cast<std::remove_reference_t<decltype(F[0])>>(weight(q) * rho);
+      for (int q = 0; q < kQ; ++q) store_population(F.data(), pop_slot(q, i), weight(q) * rho);
     }
   };
   if (settings.precision == Precision::kFloat) init(m.ff);
@@ -423,6 +423,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   h.value(static_cast<int>(settings.driving));
   h.value(pressure ? settings.density_drop : settings.body_force);
   h.value(static_cast<int>(settings.precision));
+  if (settings.precision == Precision::kFloat) h.bytes("deviation", 9);  // float slots hold f - w (layout.hpp)
   m.fp = h.h;
 }
 

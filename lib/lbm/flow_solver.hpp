@@ -56,7 +56,8 @@
 namespace cmp::lbm {
 
 enum class Driving { kPressure, kBodyForce };
-enum class Precision { kDouble, kFloat };  // storage of the populations (arithmetic is double)
+enum class Precision { kDouble, kFloat };  // storage of the populations (arithmetic is double;
+                                            // float stores f - w_q, lbm/layout.hpp)
 
 struct FlowSettings {
   std::string collision = "mrt";   // a collision_styles() name

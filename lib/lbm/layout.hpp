@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace cmp::lbm {
 
@@ -26,6 +27,32 @@ constexpr std::size_t link_index(int q, long n) {
 constexpr long slot_node(std::size_t s) {
   const long block = static_cast<long>(s / (kQ * kBatch));
   return block * kBatch + static_cast<long>(s % kBatch);
+}
+
+// The direction index of population slot s (opposite directions share a weight, so the AA
+// pattern's swapped slots do not matter to stored_offset()).
+constexpr int slot_direction(std::size_t s) { return static_cast<int>(s % (kQ * kBatch) / kBatch); }
+
+// What a slot stores is f_q - stored_offset<Real>(q): float storage keeps the deviation from
+// the rest weights w_q (f_q is w_q + O(drop, u), so float's 24 bits go to the part that moves;
+// f_q itself in float loses the small non-equilibrium part to cancellation, 2 % of kappa on a
+// small image); double keeps f_q as it is.
+template <class Real>
+constexpr double stored_offset(int q) {
+  if constexpr (std::is_same_v<Real, float>) return weight(q);
+  else return 0.0;
+}
+
+// f_q from slot s and back (the boundary passes; the sweep kernel does the same inline).
+template <class Real>
+inline double load_population(const Real* F, std::size_t s) {
+  if constexpr (std::is_same_v<Real, float>) return static_cast<double>(F[s]) + weight(slot_direction(s));
+  else return F[s];
+}
+template <class Real>
+inline void store_population(Real* F, std::size_t s, double f) {
+  if constexpr (std::is_same_v<Real, float>) F[s] = static_cast<float>(f - weight(slot_direction(s)));
+  else F[s] = f;
 }
 
 }  // namespace cmp::lbm

@@ -15,6 +15,8 @@
 #include "lbm/layout.hpp"
 
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 namespace cmp::lbm::kernel {
 
@@ -78,6 +80,50 @@ template <int B, bool kForce, class Relax>
   }
 }
 
+// A stored value to f_q and back (lbm/layout.hpp: float slots hold f_q - w_q; q is a constant
+// in every unrolled loop, so double storage costs nothing).
+template <class Real>
+[[gnu::always_inline]] inline double widen(Real v, int q) {
+  if constexpr (std::is_same_v<Real, float>) return static_cast<double>(v) + stored_offset<Real>(q);
+  else return v;
+}
+template <class Real>
+[[gnu::always_inline]] inline Real narrow(double f, int q) {
+  if constexpr (std::is_same_v<Real, float>) return static_cast<Real>(f - stored_offset<Real>(q));
+  else return f;
+}
+
+// One direction's line of a block (kBatch values) to f_q and back; float converts 4 lanes at a
+// time (left to itself the compiler converted lane by lane).
+typedef float Float4 __attribute__((vector_size(16)));
+typedef double Double4 __attribute__((vector_size(32)));
+template <class Real>
+[[gnu::always_inline]] inline void widen_line(const Real* src, int q, double* dst) {
+  if constexpr (std::is_same_v<Real, float>) {
+    for (int h = 0; h < kBatch; h += 4) {
+      Float4 x;
+      std::memcpy(&x, src + h, sizeof x);
+      const Double4 y = __builtin_convertvector(x, Double4) + stored_offset<Real>(q);
+      std::memcpy(dst + h, &y, sizeof y);
+    }
+  } else {
+    for (int b = 0; b < kBatch; ++b) dst[b] = src[b];
+  }
+}
+template <class Real>
+[[gnu::always_inline]] inline void narrow_line(const double* src, int q, Real* dst) {
+  if constexpr (std::is_same_v<Real, float>) {
+    for (int h = 0; h < kBatch; h += 4) {
+      Double4 x;
+      std::memcpy(&x, src + h, sizeof x);
+      const Float4 y = __builtin_convertvector(x - stored_offset<Real>(q), Float4);
+      std::memcpy(dst + h, &y, sizeof y);
+    }
+  } else {
+    for (int b = 0; b < kBatch; ++b) dst[b] = src[b];
+  }
+}
+
 // Blocks ahead whose neighbour lines an odd step prefetches.
 inline constexpr int kPrefetchAhead = 4;
 
@@ -92,25 +138,23 @@ template <class Real, bool kOdd, bool kForce, class Relax>
     const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
     double f[kQ][B];
     if constexpr (!kOdd) {
-      for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = own[B * q + b];
+      for (int q = 0; q < kQ; ++q) widen_line(own + B * q, q, f[q]);
     } else {
       // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
       // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
       const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
       for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
-      for (int b = 0; b < B; ++b) f[0][b] = own[b];
+      for (int b = 0; b < B; ++b) f[0][b] = widen<Real>(own[b], 0);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) f[q][b] = F[link[B * (opposite(q) - 1) + b]];
+        for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(F[link[B * (opposite(q) - 1) + b]], q);
     }
     collide_batch<B, kForce>(f, r.force, relax);
     if constexpr (!kOdd) {
-      for (int q = 0; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) own[B * opposite(q) + b] = static_cast<Real>(f[q][b]);
+      for (int q = 0; q < kQ; ++q) narrow_line(f[q], q, own + B * opposite(q));
     } else {
-      for (int b = 0; b < B; ++b) own[b] = static_cast<Real>(f[0][b]);
+      for (int b = 0; b < B; ++b) own[b] = narrow<Real>(f[0][b], 0);
       for (int q = 1; q < kQ; ++q)
-        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = static_cast<Real>(f[q][b]);
+        for (int b = 0; b < B; ++b) F[link[B * (q - 1) + b]] = narrow<Real>(f[q][b], q);
     }
   }
 }

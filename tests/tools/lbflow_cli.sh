@@ -99,6 +99,14 @@ case_same_bytes_any_thread_count() {
   "$lbflow" c.vtk --refine 2 -q --threads 2 > c.csv || fail "again"
   cmp <(grep -v '^# provenance' b.csv) <(grep -v '^# provenance' c.csv) || fail "not the same bytes twice"
 }
+case_float_storage_within_a_thousandth() {
+  cluster_vtk
+  "$lbflow" c.vtk -q > d.csv || fail "double run"
+  "$lbflow" c.vtk --precision float -q > f.csv || fail "float run"
+  grep -q "^# precision=float" f.csv || fail "precision not recorded"
+  close "$(field f.csv permeability_lu)" "$(field d.csv permeability_lu)" 1e-3 ||
+    fail "float kappa $(field f.csv permeability_lu) vs double $(field d.csv permeability_lu)"
+}
 case_timings_only_on_request() {
   cluster_vtk
   "$lbflow" c.vtk --refine 1 -q --timings > f.csv 2> err.txt || fail "run"
