@@ -57,26 +57,11 @@ double triad_gbs(int threads) {
   return 24.0 * n / best / 1e9;
 }
 
-// Random overlapping spheres of radius r until the porosity drops below `target`.
-PoreLattice porous_box(int n, double target) {
-  Random rng(2026);
-  std::vector<LatticeSphere> s;
-  const double r = n / 12.0;
-  PoreLattice p = open_box(n, n, n);
-  while (true) {
-    for (int k = 0; k < 16; ++k) s.push_back({rng.uniform(0, n), rng.uniform(0, n), rng.uniform(0, n), r});
-    p = periodic_spheres(n, n, n, s);
-    if (p.porosity() < target) break;
-  }
-  p.wall_fraction = nullptr;
-  return p;
-}
-
 int speed(int n, int threads, const std::string& style, long steps, bool f32) {
   std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound,even_mlups,odd_mlups,precision\n");
   const double bw = triad_gbs(threads);
   for (int porous = 0; porous < 2; ++porous) {
-    const PoreLattice p = porous ? porous_box(n, 0.35) : open_box(n, n, n);
+    const PoreLattice p = porous ? random_sphere_box(n, 0.35, 2026) : open_box(n, n, n);
     FlowSettings s;
     s.collision = style;
     s.driving = porous ? Driving::kPressure : Driving::kBodyForce;

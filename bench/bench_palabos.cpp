@@ -61,23 +61,6 @@ using cmp::lbm::PoreLattice;
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 bool main_rank() { return plb::global::mpi().isMainProcessor(); }
 
-// bench_lbm's porous box, node for node: random overlapping spheres of radius n/12 (seed
-// 2026, 16 at a time) until the porosity drops below `target`. The fluid node count is
-// printed so that make bench can check it against bench_lbm's row.
-PoreLattice porous_box(int n, double target) {
-  cmp::Random rng(2026);
-  std::vector<cmp::lbm::LatticeSphere> s;
-  const double r = n / 12.0;
-  PoreLattice p = cmp::lbm::open_box(n, n, n);
-  while (true) {
-    for (int k = 0; k < 16; ++k) s.push_back({rng.uniform(0, n), rng.uniform(0, n), rng.uniform(0, n), r});
-    p = cmp::lbm::periodic_spheres(n, n, n, s);
-    if (p.porosity() < target) break;
-  }
-  p.wall_fraction = nullptr;
-  return p;
-}
-
 // Makes every solid node of `pore` (absolute coordinates) a full bounce-back cell, on
 // whichever block of whichever rank holds it.
 template <template <typename U> class D>
@@ -178,7 +161,7 @@ int speed(int n, long steps, bool mrt_only) {
   if (!mrt_only)
     speed_row<ForcedD3Q19Descriptor>("dense", dense, "bgk", new GuoExternalForceBGKdynamics<T, ForcedD3Q19Descriptor>(1.), false, steps);
   speed_row<MRTD3Q19Descriptor>("dense", dense, "mrt", new MRTdynamics<T, MRTD3Q19Descriptor>(1.), true, steps);
-  const PoreLattice porous = porous_box(n, 0.35);
+  const PoreLattice porous = cmp::lbm::random_sphere_box(n, 0.35, 2026);
   speed_row<MRTD3Q19Descriptor>("porous", porous, "mrt", new MRTdynamics<T, MRTD3Q19Descriptor>(1.), true, steps);
   if (mrt_only) return 0;
   speed_row<D3Q19Descriptor>("porous", porous, "bgk", new BGKdynamics<T, D3Q19Descriptor>(1.), true, steps);

@@ -8,7 +8,7 @@ def _speed(r):
             f"{float(r['mlups']):.1f} MLUPS = {float(r['fraction_of_bound']):.2f} of the (double) triad bound "
             f"({float(r['triad_gbs']):.1f} GB/s -> {float(r['bound_mlups']):.0f} MLUPS); even/odd AA steps alone "
             f"{float(r['even_mlups']):.0f}/{float(r['odd_mlups']):.0f} MLUPS; {float(r['bytes_per_node']):.0f} B/fluid node",
-            "Palabos MRT ~10 MLUPS per core here; goal >= 1/2 of the bound on 2 cores")
+            "Palabos rows below, same run; goal >= 1/2 of the bound on 2 cores")
 
 
 def _sphere(r):

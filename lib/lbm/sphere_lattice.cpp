@@ -3,6 +3,7 @@
 #include "lbm/d3q19.hpp"
 
 #include "core/errors.hpp"
+#include "core/random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,20 @@ PoreLattice simple_cubic_array(int n, double solid_fraction) {
   const double r = n * std::cbrt(3 * solid_fraction / (4 * std::numbers::pi));
   const double c = 0.5 * (n - 1);
   return periodic_spheres(n, n, n, {{c, c, c, r}});
+}
+
+PoreLattice random_sphere_box(int n, double target_porosity, std::uint64_t seed) {
+  Random rng(seed);
+  std::vector<LatticeSphere> s;
+  const double r = n / 12.0;
+  PoreLattice p = open_box(n, n, n);
+  while (true) {
+    for (int k = 0; k < 16; ++k) s.push_back({rng.uniform(0, n), rng.uniform(0, n), rng.uniform(0, n), r});
+    p = periodic_spheres(n, n, n, s);
+    if (p.porosity() < target_porosity) break;
+  }
+  p.wall_fraction = nullptr;
+  return p;
 }
 
 namespace {

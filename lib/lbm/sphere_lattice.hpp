@@ -3,6 +3,7 @@
 // array of the drag benchmarks and, from a packing, the geometry for interpolated bounce-back.
 #include "lbm/pore_lattice.hpp"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,12 @@ PoreLattice periodic_spheres(int nx, int ny, int nz, const std::vector<LatticeSp
 // One sphere of solid fraction c = 4 pi r^3 / (3 n^3) centred in an n^3 periodic box: the
 // simple cubic array. radius = n (3c / (4 pi))^(1/3).
 PoreLattice simple_cubic_array(int n, double solid_fraction);
+
+// The bench's porous box: random overlapping spheres of radius n/12 in an n^3 periodic
+// lattice (centres uniform, 16 at a time from xoshiro seeded with `seed`) until the porosity
+// falls below `target_porosity` in (0, 1); staircase walls (no wall_fraction). The same
+// arguments give the same lattice node for node, so two codes can be timed on it.
+PoreLattice random_sphere_box(int n, double target_porosity, std::uint64_t seed);
 
 // Stokes drag of the simple cubic array: K = F / (6 pi mu a U) per sphere, U the superficial
 // velocity, F = |grad p| L^3 (the pressure gradient times the cell volume).

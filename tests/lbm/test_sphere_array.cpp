@@ -66,3 +66,14 @@ TEST_CASE("sphere array: interpolated bounce-back removes most of the staircase 
   CHECK(hi[0] - lo[0] > 0.05);
   CHECK(hi[1] - lo[1] < 0.3 * (hi[0] - lo[0]));
 }
+
+TEST_CASE("sphere array: the bench's random sphere box is below its porosity target, and the same for the same seed") {
+  const auto a = random_sphere_box(24, 0.35, 2026);
+  const auto b = random_sphere_box(24, 0.35, 2026);
+  const auto c = random_sphere_box(24, 0.35, 7);
+  CHECK(a.porosity() < 0.35);
+  CHECK(a.porosity() > 0.25);  // stops at the first batch of 16 spheres below the target
+  CHECK(a.fluid == b.fluid);
+  CHECK(a.fluid != c.fluid);
+  CHECK(!a.wall_fraction);
+}
