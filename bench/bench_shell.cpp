@@ -99,4 +99,14 @@ int main(int argc, char** argv) {
     std::printf("fire_iterations_per_s_%ld,%.1f,1/s\n", static_cast<long>(rest.V.rows()), r.iterations / sec);
     if (level == 5) std::printf("inflate_2562_to_equilibrium,%.3f,s (%ld FIRE iterations)\n", sec, r.iterations);
   }
+  // Forces of 40962 vertices, the size of a packing of 16 shells of 2562, where the force
+  // passes run on all threads (element_assembly.hpp).
+  {
+    const auto rest = sphere(7);
+    auto s = shell::make_shell_system(rest, m);
+    Eigen::VectorXd x = 1.01 * s.x, f;
+    const double per = per_call([&] { s.forces(x, f); });
+    std::printf("force_evaluations_%ld,%.1f,1/s\n", static_cast<long>(rest.V.rows()), 1.0 / per);
+    std::printf("triangle_forces_%ld,%.3g,1/s\n", static_cast<long>(rest.V.rows()), rest.F.rows() / per);
+  }
 }

@@ -7,6 +7,13 @@
 
 namespace cmp::shell {
 
+namespace {
+long parallel_element_threshold = 65536;
+}  // namespace
+
+long ElementAssembly::parallel_elements() { return parallel_element_threshold; }
+void ElementAssembly::set_parallel_elements(long count) { parallel_element_threshold = count; }
+
 ElementAssembly::ElementAssembly(const std::vector<int>& corners, int arity, long vertex_count)
     : elements_(static_cast<long>(corners.size()) / arity), vertices_(vertex_count) {
   if (arity <= 0 || corners.size() % static_cast<std::size_t>(arity) != 0)

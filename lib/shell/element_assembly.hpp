@@ -76,12 +76,20 @@ class ElementAssembly {
     return total;
   }
 
-  // Elements per chunk, and the element count from which the passes run on all threads.
+  // Elements per chunk.
   static constexpr long kChunkElements = 512;
-  static constexpr long kParallelElements = 2048;
+  // The element count from which the passes run on all threads (default 65536). Measured on
+  // 2 cores (bench_shell terms LEVEL): a parallel region costs ~20 us with the toolkit's
+  // sleeping wait, and the gather reads element slots the other core wrote, so one shell of
+  // 10242 vertices (20480 triangles, 30720 hinges) computed its forces 1.2 times slower on two
+  // threads than on one, while 40962 vertices (the size of 16 shells of 2562) ran 1.5 times
+  // faster. The setter is for tests (same bits on any thread count at small sizes) and
+  // benchmarks; it is not thread-safe against running assemblies.
+  static long parallel_elements();
+  static void set_parallel_elements(long count);
 
  private:
-  bool parallel() const { return elements_ >= kParallelElements && omp_get_max_threads() > 1 && !omp_in_parallel(); }
+  bool parallel() const { return elements_ >= parallel_elements() && omp_get_max_threads() > 1 && !omp_in_parallel(); }
   // Adds the sums of vertices [begin, end) into g.
   void gather(long begin, long end, double* g) const;
 

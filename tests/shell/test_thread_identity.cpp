@@ -1,6 +1,7 @@
-// Same input, same bits on 1, 2 and 3 threads: every force term of a 2562-vertex shell (large
-// enough for the terms' parallel passes, element_assembly.hpp), their energies, the total
+// Same input, same bits on 1, 2 and 3 threads: every force term of a 2562-vertex shell (with
+// the terms' parallel passes switched on from 2048 elements, element_assembly.hpp), their energies, the total
 // force, and a short FIRE relaxation (whose vector passes are parallel too from 2048 vertices).
+#include "shell/element_assembly.hpp"
 #include "shell/relax.hpp"
 #include "shell/styles.hpp"
 
@@ -42,6 +43,8 @@ struct Run {
 
 Run run_on(int threads) {
   const int saved = omp_get_max_threads();
+  const long saved_threshold = ElementAssembly::parallel_elements();
+  ElementAssembly::set_parallel_elements(2048);  // the passes run on all threads at this size
   omp_set_num_threads(threads);
   ShellSystem s = all_terms();
   std::mt19937_64 rng(11);
@@ -59,6 +62,7 @@ Run run_on(int threads) {
   r.iterations = relax(s, p).iterations;
   r.relaxed = s.x;
   omp_set_num_threads(saved);
+  ElementAssembly::set_parallel_elements(saved_threshold);
   return r;
 }
 
