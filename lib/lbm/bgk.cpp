@@ -16,7 +16,7 @@ struct BgkRelax {
 };
 
 template <class Real>
-[[gnu::target_clones("avx2", "default")]] void sweep_bgk(const SweepRange<Real>& r, const BgkRelax& relax) {
+[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void sweep_bgk(const SweepRange<Real>& r, const BgkRelax& relax) {
   kernel::sweep(r, relax);
 }
 

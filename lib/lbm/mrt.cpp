@@ -108,7 +108,7 @@ struct MrtRelax {
 };
 
 template <class Real>
-[[gnu::target_clones("avx2", "default")]] void sweep_mrt(const SweepRange<Real>& r, const MrtRelax& relax) {
+[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void sweep_mrt(const SweepRange<Real>& r, const MrtRelax& relax) {
   kernel::sweep(r, relax);
 }
 

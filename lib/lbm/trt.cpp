@@ -24,7 +24,7 @@ struct TrtRelax {
 };
 
 template <class Real>
-[[gnu::target_clones("avx2", "default")]] void sweep_trt(const SweepRange<Real>& r, const TrtRelax& relax) {
+[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void sweep_trt(const SweepRange<Real>& r, const TrtRelax& relax) {
   kernel::sweep(r, relax);
 }
 
