@@ -22,6 +22,18 @@ namespace cmp::shell {
 
 namespace {
 
+// The "# key=value" lines every shell case starts with: provenance, what the case is, and the
+// shell's radius and material.
+void write_case_meta(io::CsvWriter& csv, const std::string& provenance, const std::string& what, double radius,
+                     const MaterialParameters& m) {
+  csv.meta("provenance", provenance);
+  csv.meta("case", what);
+  csv.meta("R0", io::format_number(radius));
+  csv.meta("E", io::format_number(m.youngs_modulus));
+  csv.meta("nu", io::format_number(m.poisson_ratio));
+  csv.meta("t", io::format_number(m.thickness));
+}
+
 using io::format_number;
 
 void write_sphere(bool quick, std::ostream& out, const std::string& provenance,
@@ -35,12 +47,8 @@ void write_sphere(bool quick, std::ostream& out, const std::string& provenance,
   if (note) note(fmt::format("sphere: icosahedral level {}, {} loads, {} models", c.level, c.loads.size(), c.models.size()));
   const auto rows = sphere_inflation(c);
   io::CsvWriter csv(out);
-  csv.meta("provenance", provenance);
-  csv.meta("case", "sphere (B.5.1, Fig. B.4A): strain eps_r = cbrt(V/V0) - 1 of an inflated sphere");
-  csv.meta("R0", format_number(c.radius));
-  csv.meta("E", format_number(c.material.youngs_modulus));
-  csv.meta("nu", format_number(c.material.poisson_ratio));
-  csv.meta("t", format_number(c.material.thickness));
+  write_case_meta(csv, provenance, "sphere (B.5.1, Fig. B.4A): strain eps_r = cbrt(V/V0) - 1 of an inflated sphere",
+                  c.radius, c.material);
   csv.meta("level", std::to_string(c.level));
   csv.meta("columns", "dP_E = dP/E; eps_r of the mesh; eps_r_svk the SVK sphere (corrected B.81); eps_r_printed the "
                       "printed B.82; eps_r_linear the small-strain limit; rel_error = eps_r/eps_r_svk - 1");
@@ -65,12 +73,9 @@ void write_plates_contact(bool quick, std::ostream& out, const std::string& prov
   if (note) note(fmt::format("plates-contact: icosahedral level {}, {} compressions", c.level, c.compressions.size()));
   const auto rows = membrane_squeeze(c);
   io::CsvWriter csv(out);
-  csv.meta("provenance", provenance);
-  csv.meta("case", "plates-contact (B.6, Fig. B.9): inflated SVK membrane, constant volume, between rigid plates");
-  csv.meta("R0", format_number(c.radius));
-  csv.meta("E", format_number(c.material.youngs_modulus));
-  csv.meta("nu", format_number(c.material.poisson_ratio));
-  csv.meta("t", format_number(c.material.thickness));
+  write_case_meta(csv, provenance,
+                  "plates-contact (B.6, Fig. B.9): inflated SVK membrane, constant volume, between rigid plates",
+                  c.radius, c.material);
   csv.meta("P_i_E", format_number(c.inflation));
   csv.meta("vertex_radius", format_number(c.vertex_radius));
   csv.meta("level", std::to_string(c.level));
@@ -116,12 +121,7 @@ struct PlateModel {
 const PlateModel kPlateModels[] = {{"svk+hinge-uniform", "hinge-uniform"}, {"svk+hinge", "hinge"}, {"svk", ""}};
 
 void plate_meta(io::CsvWriter& csv, const std::string& provenance, const PlateCase& c, const std::string& what) {
-  csv.meta("provenance", provenance);
-  csv.meta("case", what);
-  csv.meta("R0", format_number(c.radius));
-  csv.meta("E", format_number(c.material.youngs_modulus));
-  csv.meta("nu", format_number(c.material.poisson_ratio));
-  csv.meta("t", format_number(c.material.thickness));
+  write_case_meta(csv, provenance, what, c.radius, c.material);
   csv.meta("vertices", std::to_string(c.vertices));
   csv.meta("clamping", "the rim and every vertex within one lattice spacing of it fixed");
 }
