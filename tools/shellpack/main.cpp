@@ -120,6 +120,9 @@ int main(int argc, char** argv) {
     jam->add_flag("--timings", o.jam.timings, "add the wall time of each packing (`seconds`) to the CSV");
     tool.add_double(*jam, "--phi0", p.initial_volume_fraction, "volume fraction of the random start, psi_0", cli::open(0, 0.5));
     tool.add_double(*jam, "--eps-r", p.initial_step, "first relative radius step eps_r, halved at each reversal", cli::open(0, 0.5));
+    tool.add_double(*jam, "--polydispersity", p.polydispersity,
+                    "relative standard deviation of the radii (uniform sizes; 0: monodisperse as in the thesis)",
+                    cli::closed(0, spheres::kMaxPolydispersity));
     tool.add_double(*jam, "--pmin", p.min_pressure, "P_min [E]: stop when P_min < P < 2 P_min", cli::positive());
     tool.add_double(*jam, "--youngs-modulus", p.material.youngs_modulus, "Young's modulus E of the spheres [pressure units]",
                     cli::positive());
