@@ -18,6 +18,8 @@ using io::format_number;
 std::string cell(const std::optional<double>& v) { return v ? format_number(*v) : std::string(); }
 std::string cell(const std::optional<long>& v) { return v ? std::to_string(*v) : std::string(); }
 
+std::string brief(const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : std::string("-"); }
+
 double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
@@ -168,7 +170,7 @@ void run_analyze_batch(const AnalyzeBatch& b, const std::string& provenance) {
     for (const auto& a : all) {
       const auto s = summarise(a);
       std::cerr << fmt::format("shellpack: {}: N = {}, phi = {:.4f} ({}), Z = {}, mu_eff = {}, Voronoi faces = {}\n", a.file,
-                               a.particles, a.phi, a.phi_source, cell(s.Z), cell(s.mu_eff), cell(s.voronoi_faces_mean));
+                               a.particles, a.phi, a.phi_source, brief(s.Z), brief(s.mu_eff), brief(s.voronoi_faces_mean));
     }
 }
 
