@@ -85,7 +85,7 @@ TEST_CASE("shell contacts: two spheres pressed together push along their centre 
   }
 }
 
-TEST_CASE("shell contacts: apart by more than 2 R_v, no contact; a sheared pair has a tangential part",
+TEST_CASE("shell contacts: apart by more than 2 R_v no contact, a sheared pair has a tangential part",
           "[packing_observables]") {
   ContactParameters cp;
   cp.vertex_radius = 0.1;
