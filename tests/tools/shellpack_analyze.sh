@@ -98,6 +98,30 @@ case_walls() {
   [ "$(grep -c 'warning: walls.off: not periodic on every axis' err.txt)" = 1 ] || fail "one warning: $(cat err.txt)"
   expect_error 2 "walls.off: not periodic on every axis: no g(r) for --rdf" run walls.off -o out.csv --rdf out_rdf.csv
 }
+case_plates_pressure_over_coverage_near_turgor() {
+  # Fig. 4.5b on one shell (scripts/analyze_plates_table.sh): a membrane squeezed between
+  # plates by shellpack shell; P / Theta (the mean stress on the contact patch) is near Pi.
+  "$rndmesh" icosa --level 4 -r 1 -o c4.off -q || fail "rndmesh"
+  "$shellpack" shell --mesh c4.off -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume --walls 2.1 \
+    --squeeze 0.3 --squeeze-steps 3 -q -o squeezed.off >squeezed.csv || fail "shellpack shell"
+  python3 - <<'PY' || fail "packing"
+import csv
+lines = [l for l in open('squeezed.off') if l.strip() and not l.startswith('#')]
+nv, nf = map(int, lines[1].split()[:2])
+last = list(csv.DictReader(l for l in open('squeezed.csv') if not l.startswith('#')))[-1]
+gap = float(last['gap_u'])
+with open('plates.off', 'w') as o:
+    o.write('OFF\n# box 10 10 %r\n# periodic 1 1 0\n# shells 1 %d\n# E=1\n# nu=0.5\n# vertex_radius=0.02\n' % (gap, nv))
+    o.write('# turgor=%s\n%d %d 0\n' % (last['turgor_P'], nv, nf))
+    for l in lines[2:2 + nv]:
+        x, y, z = map(float, l.split())
+        o.write('%r %r %r\n' % (x + 5, y + 5, z + gap / 2))
+    o.writelines(lines[2 + nv:2 + nv + nf])
+PY
+  run plates.off >out.csv 2>/dev/null || fail "analyze"
+  awk -v q="$(col out.csv wall_pressure_over_coverage_P)" -v t="$(col out.csv turgor_mean_P)" \
+    'BEGIN { exit !(q > t && q < 1.1 * t) }' || fail "P/Theta not within 10 % above Pi: $(cat out.csv)"
+}
 case_missing_keys_warn() {
   pack bare.off 2 1.0 sc "1 1 1"
   run bare.off >out.csv 2>err.txt || fail "analyze"
