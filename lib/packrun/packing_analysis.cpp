@@ -88,7 +88,11 @@ PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions&
     neighbours::Box box;
     box.lengths = p.box;
     box.periodic = p.periodic;
-    a.contacts = shell::shell_contacts(p.V, p.F, p.offsets, box, cp);
+    try {
+      a.contacts = shell::shell_contacts(p.V, p.F, p.offsets, box, cp);
+    } catch (const UsageError& e) {  // R_v too large for the box: a problem of this file
+      throw InputError(p.file, 0, fmt::format("R_v = {}: {}", cp.vertex_radius, e.what()));
+    }
     a.contacts_per_shell = shell::contacts_per_shell(a.contacts, a.particles);
     a.has_contacts = true;
     a.has_forces = E.has_value();
