@@ -80,14 +80,14 @@ void write_analysis_summary(std::ostream& out, const std::vector<PackingAnalysis
   io::CsvWriter csv(out);
   csv.meta("provenance", provenance);
   csv.meta("units", kUnits);
-  csv.header({"file", "particles", "phi", "phi_source", "d0", "d0_source", "contacts", "Z", "dZ", "turgor_mean_P",
+  csv.header({"file", "particles", "phi", "phi_source", "d0", "d0_source", "bending", "contacts", "Z", "dZ", "turgor_mean_P",
               "turgor_mean_P0", "turgor_cv", "asphericity_mean_d02", "delta_eps_mean", "force_normal_mean_F",
               "force_normal_cv", "force_tangential_mean_F", "mu_eff", "wall_pressure_P", "coverage",
               "wall_pressure_over_coverage_P", "voronoi_faces_mean"});
   for (const auto& a : all) {
     const auto s = summarise(a);
     csv.row({a.file, std::to_string(a.particles), format_number(a.phi), a.phi_source, format_number(a.d0), a.d0_source,
-             cell(s.contacts), cell(s.Z), cell(s.dZ), cell(s.turgor_mean), cell(s.turgor_mean_p0), cell(s.turgor_cv),
+             a.bending, cell(s.contacts), cell(s.Z), cell(s.dZ), cell(s.turgor_mean), cell(s.turgor_mean_p0), cell(s.turgor_cv),
              format_number(s.asphericity_mean_d02), format_number(s.delta_eps_mean), cell(s.force_normal_mean),
              cell(s.force_normal_cv), cell(s.force_tangential_mean), cell(s.mu_eff), cell(s.wall_pressure),
              cell(s.coverage), cell(s.wall_pressure_over_coverage), cell(s.voronoi_faces_mean)});

@@ -52,6 +52,7 @@ PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions&
   a.d0 = o.d0 ? *o.d0 : p.d0;
   a.d0_source = o.d0 ? "option" : p.d0_source;
   const auto& k = p.keys;
+  a.bending = k.bending.value_or("");
   auto warn = [&](const std::string& what) { a.warnings.push_back(fmt::format("{}: {}", p.file, what)); };
 
   a.volumes = voxel::shell_volumes(p.V, p.F, p.offsets);

@@ -36,6 +36,7 @@ struct PackingAnalysis {
   std::string phi_source;  // file (phi=), volume0 (sum V0 / box volume), shell_volumes (enclosed volumes)
   double d0 = 1;
   std::string d0_source;
+  std::string bending;  // the file's bending= (a style or none; empty when absent)
   Eigen::Vector3d box = Eigen::Vector3d::Ones();
   std::vector<double> volumes;              // enclosed volume per shell [length^3]
   std::vector<shell::ShellShape> shapes;    // per shell

@@ -169,7 +169,7 @@ TEST_CASE("analyze: the summary table has one row per packing with the documente
   std::ostringstream out;
   write_analysis_summary(out, {a, a}, "test");
   const std::string s = out.str();
-  CHECK(s.find("file,particles,phi,phi_source,d0,d0_source,contacts,Z,dZ,turgor_mean_P,turgor_mean_P0,turgor_cv,"
+  CHECK(s.find("file,particles,phi,phi_source,d0,d0_source,bending,contacts,Z,dZ,turgor_mean_P,turgor_mean_P0,turgor_cv,"
                "asphericity_mean_d02,delta_eps_mean,force_normal_mean_F,force_normal_cv,force_tangential_mean_F,mu_eff,"
                "wall_pressure_P,coverage,wall_pressure_over_coverage_P,voronoi_faces_mean\n") != std::string::npos);
   CHECK(s.find("sc.off,8,") != std::string::npos);

@@ -39,7 +39,7 @@ with open(out, 'w') as o:
         for f in F: o.write('3 %d %d %d\n' % tuple(i + k * nv for i in f))
 PY
 }
-keys=("vertex_radius=0.06" "E=1" "nu=0.5" "P0=0.25" "turgor={K}")
+keys=("vertex_radius=0.06" "E=1" "nu=0.5" "P0=0.25" "turgor={K}" "bending=none")
 run() { "$shellpack" analyze -q "$@"; }
 col() { awk -F, -v c="$2" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == c) k = i; h = 1; next } { print $k }' "$1"; }
 
@@ -55,13 +55,14 @@ case_simple_cubic() {
   run sc.off >out.csv 2>err.txt || fail "analyze: $(cat err.txt)"
   [ ! -s err.txt ] || fail "warnings on a complete packing: $(cat err.txt)"
   grep -q "^# provenance=shellpack .*analyze" out.csv || fail "provenance"
-  grep -q "^file,particles,phi,phi_source,d0,d0_source,contacts,Z,dZ,turgor_mean_P,turgor_mean_P0,turgor_cv,asphericity_mean_d02,delta_eps_mean,force_normal_mean_F,force_normal_cv,force_tangential_mean_F,mu_eff,wall_pressure_P,coverage,wall_pressure_over_coverage_P,voronoi_faces_mean$" out.csv || fail "header: $(cat out.csv)"
+  grep -q "^file,particles,phi,phi_source,d0,d0_source,bending,contacts,Z,dZ,turgor_mean_P,turgor_mean_P0,turgor_cv,asphericity_mean_d02,delta_eps_mean,force_normal_mean_F,force_normal_cv,force_tangential_mean_F,mu_eff,wall_pressure_P,coverage,wall_pressure_over_coverage_P,voronoi_faces_mean$" out.csv || fail "header: $(cat out.csv)"
   [ "$(col out.csv particles)" = 27 ] || fail "particles"
   [ "$(col out.csv contacts)" = 81 ] || fail "contacts: $(col out.csv contacts)"
   [ "$(col out.csv Z)" = 6 ] || fail "Z: $(col out.csv Z)"
   [ "$(col out.csv voronoi_faces_mean)" = 6 ] || fail "Voronoi: $(col out.csv voronoi_faces_mean)"
   [ "$(col out.csv turgor_mean_P0)" = 2 ] || fail "turgor/P0: $(col out.csv turgor_mean_P0)"
   [ "$(col out.csv phi_source)" = shell_volumes ] || fail "phi_source"
+  [ "$(col out.csv bending)" = none ] || fail "bending"
   [ -z "$(col out.csv wall_pressure_P)" ] || fail "a wall pressure without walls"
   awk -v f="$(col out.csv force_normal_mean_F)" 'BEGIN { exit !(f > 0) }' || fail "normal force"
 }
