@@ -15,23 +15,8 @@ echo "|---|---|---|---|"
 for sq in 0.05 0.1 0.2 0.3 0.4; do
   "$bin/shellpack" shell --mesh "$work/cell.off" -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume \
     --walls 2.1 --squeeze "$sq" --squeeze-steps 4 -q -o "$work/shell.off" >"$work/shell.csv"
-  python3 - "$work/shell.off" "$work/shell.csv" "$work/pack.off" <<'PY'
-# The plates of `shellpack shell --walls` sit at z = +-gap/2 about the mesh's centre (the
-# origin here); a packing OFF's walls are at z = 0 and L.
-import sys, csv
-src, table, out = sys.argv[1:4]
-lines = [l for l in open(src) if l.strip() and not l.startswith('#')]
-nv, nf = map(int, lines[1].split()[:2])
-last = list(csv.DictReader(l for l in open(table) if not l.startswith('#')))[-1]
-gap = float(last['gap_u'])
-with open(out, 'w') as o:
-    o.write('OFF\n# box 10 10 %r\n# periodic 1 1 0\n# shells 1 %d\n' % (gap, nv))
-    o.write('# E=1\n# nu=0.5\n# vertex_radius=0.02\n# P0=0.0025\n# turgor=%s\n%d %d 0\n' % (last['turgor_P'], nv, nf))
-    for l in lines[2:2 + nv]:
-        x, y, z = map(float, l.split())
-        o.write('%r %r %r\n' % (x + 5, y + 5, z + gap / 2))
-    o.writelines(lines[2 + nv:2 + nv + nf])
-PY
+  python3 "$(dirname "$0")/plates_to_packing.py" "$work/shell.off" "$work/shell.csv" "$work/pack.off" \
+    E=1 nu=0.5 vertex_radius=0.02 P0=0.0025
   "$bin/shellpack" analyze "$work/pack.off" -q 2>/dev/null | python3 -c "
 import sys, csv
 r = list(csv.DictReader(l for l in sys.stdin if not l.startswith('#')))[0]

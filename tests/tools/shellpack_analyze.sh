@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # shellpack analyze as a user runs it: packing OFFs of icosphere shells on lattices (written
 # here), their summary, tables, warnings and refusals. `shellpack_analyze.sh --list` prints the
-# cases; `shellpack_analyze.sh CASE` runs one (ctest registers each). Needs CMP_BIN.
+# cases; `shellpack_analyze.sh CASE` runs one (ctest registers each). Needs CMP_BIN (and
+# CMP_SRC, else the sources around this script).
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 if [ "${1:-}" != --list ]; then
   case $bin in /*) ;; *) bin="$PWD/$bin" ;; esac
 fi
 shellpack="$bin/shellpack"
+src=${CMP_SRC:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
 rndmesh="$bin/rndmesh"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=shellpack
@@ -105,20 +107,8 @@ case_plates_pressure_over_coverage_near_turgor() {
   "$rndmesh" icosa --level 4 -r 1 -o c4.off -q || fail "rndmesh"
   "$shellpack" shell --mesh c4.off -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume --walls 2.1 \
     --squeeze 0.3 --squeeze-steps 3 -q -o squeezed.off >squeezed.csv || fail "shellpack shell"
-  python3 - <<'PY' || fail "packing"
-import csv
-lines = [l for l in open('squeezed.off') if l.strip() and not l.startswith('#')]
-nv, nf = map(int, lines[1].split()[:2])
-last = list(csv.DictReader(l for l in open('squeezed.csv') if not l.startswith('#')))[-1]
-gap = float(last['gap_u'])
-with open('plates.off', 'w') as o:
-    o.write('OFF\n# box 10 10 %r\n# periodic 1 1 0\n# shells 1 %d\n# E=1\n# nu=0.5\n# vertex_radius=0.02\n' % (gap, nv))
-    o.write('# turgor=%s\n%d %d 0\n' % (last['turgor_P'], nv, nf))
-    for l in lines[2:2 + nv]:
-        x, y, z = map(float, l.split())
-        o.write('%r %r %r\n' % (x + 5, y + 5, z + gap / 2))
-    o.writelines(lines[2 + nv:2 + nv + nf])
-PY
+  python3 "$src/scripts/plates_to_packing.py" squeezed.off squeezed.csv plates.off E=1 nu=0.5 vertex_radius=0.02 ||
+    fail "packing"
   run plates.off >out.csv 2>/dev/null || fail "analyze"
   awk -v q="$(col out.csv wall_pressure_over_coverage_P)" -v t="$(col out.csv turgor_mean_P)" \
     'BEGIN { exit !(q > t && q < 1.1 * t) }' || fail "P/Theta not within 10 % above Pi: $(cat out.csv)"

@@ -225,14 +225,17 @@ int main(int argc, char** argv) {
     analyze->add_option("--shells", an.shells_output, "write one row per shell to this CSV");
     analyze->add_option("--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
     ov.E_opt = tool.add_double(*analyze, "-E,--youngs-modulus", ov.E, "Young's modulus E [P] (default: the file's E=)",
-                               cli::positive());
+                               cli::positive())->default_str("");
     ov.nu_opt = tool.add_double(*analyze, "--nu,--poisson-ratio", ov.nu, "Poisson's ratio nu (default: the file's nu=, else 0.5)",
                                 cli::left_open(-1, 0.5));
     ov.rv_opt = tool.add_double(*analyze, "--vertex-radius", ov.rv,
-                                "Hertz vertex radius R_v [u] (default: the file's vertex_radius=, else thickness=)", cli::positive());
+                                "Hertz vertex radius R_v [u] (default: the file's vertex_radius=, else thickness=)",
+                                cli::positive())
+                    ->default_str("");
     ov.d0_opt = tool.add_double(*analyze, "--d0", ov.d0, "D0, the unit of g(r) [u] (default: the file's D0=, else from the volumes)",
-                                cli::positive());
-    ov.p0_opt = tool.add_double(*analyze, "--p0", ov.p0, "initial turgor P0 [P] (default: the file's P0=)", cli::positive());
+                                cli::positive())->default_str("");
+    ov.p0_opt = tool.add_double(*analyze, "--p0", ov.p0, "initial turgor P0 [P] (default: the file's P0=)", cli::positive())
+                    ->default_str("");
     tool.add_double(*analyze, "--wall-modulus", an.options.wall_modulus, "Young's modulus of the walls [P] (default: rigid)",
                     cli::positive());
     tool.add_double(*analyze, "--bin", an.options.bin_width, "g(r) bin width [D0]", cli::positive());
