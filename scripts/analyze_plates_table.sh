@@ -4,12 +4,12 @@
 # mesh turned into a packing OFF with walls at z = 0 and the gap, read by `shellpack analyze`:
 # the wall pressure P over the coverage Theta (both per area of the arbitrary 10 x 10 walls:
 # their ratio does not depend on it) against the turgor Pi. Prints a Markdown table
-# (README, shellpack analyze). About 5 s. Usage: scripts/analyze_plates_table.sh [BIN_DIR]
+# (README, shellpack analyze). About 30 s. Usage: scripts/analyze_plates_table.sh [BIN_DIR]
 set -euo pipefail
 bin=${1:-build/bin}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$bin/rndmesh" icosa --level 4 -r 1 -o "$work/cell.off" -q
+"$bin/rndmesh" icosa --level 5 -r 1 -o "$work/cell.off" -q
 echo "| squeeze | gap / D0 | Pi / P0 | (P / Theta) / Pi |"
 echo "|---|---|---|---|"
 for sq in 0.05 0.1 0.2 0.3 0.4; do

@@ -18,8 +18,8 @@ using namespace cmp::shell;
 
 namespace {
 
-// Two level-3 icospheres (642 vertices) of radius 1 facing each other vertex to vertex along x (B is A mirrored in
-// the plane x = c), their tips overlapping by `overlap`.
+// Two level-3 icospheres (162 vertices) of radius 1 facing each other vertex to vertex along
+// x (B is A mirrored in the plane x = c), their tips overlapping by `overlap`.
 fixtures::SyntheticPacking two_touching_spheres(double rv, double overlap) {
   const auto a = fixtures::icosphere_vertex_on_x(3, 1.0);
   mesh::TriMesh b = a;
@@ -83,6 +83,33 @@ TEST_CASE("shell contacts: two spheres pressed together push along their centre 
     CHECK(effective_friction(contacts) < 0.05);
     CHECK(effective_friction(contacts) == Approx(c01.tangential.norm() / c01.normal.norm()).epsilon(1e-9).margin(0));
   }
+}
+
+TEST_CASE("shell contacts: Eq. S4.5 on two icosahedra tip to tip, normal part |F| cos of the face tilt",
+          "[packing_observables]") {
+  // Only the two tip vertices overlap. The five faces around a tip are tilted from the tip
+  // direction by the same angle, cos = inradius / circumradius = sqrt((5 + 2 sqrt 5) / 15),
+  // so S4.5 gives |F| cos along F, and mu_eff = (1 - cos) / cos.
+  ContactParameters cp;
+  cp.vertex_radius = 0.1;
+  const double overlap = 0.05;
+  const auto a = fixtures::icosphere_vertex_on_x(1, 1.0);  // the icosahedron itself
+  mesh::TriMesh b = a;
+  const double c = 1.0 + cp.vertex_radius - 0.5 * overlap;
+  for (Eigen::Index i = 0; i < b.V.rows(); ++i) b.V(i, 0) = 2 * c - b.V(i, 0);
+  b.F.col(1).swap(b.F.col(2));
+  fixtures::SyntheticPacking p;
+  fixtures::add_shell(p, a, Eigen::Vector3d::Zero());
+  fixtures::add_shell(p, b, Eigen::Vector3d::Zero());
+  const auto contacts = shell_contacts(p.V, p.F, p.offsets, box_of(10.0, false), cp);
+  REQUIRE(contacts.size() == 2);
+  CHECK(contacts[0].vertex_pairs == 1);
+  const double f = hertz_force(overlap, cp.vertex_effective_modulus(), 0.5 * cp.vertex_radius);
+  const double cosine = std::sqrt((5 + 2 * std::sqrt(5.0)) / 15);
+  CHECK((contacts[0].force - Eigen::Vector3d(-f, 0, 0)).norm() <= 1e-12 * f);
+  CHECK((contacts[0].normal - Eigen::Vector3d(-f * cosine, 0, 0)).norm() <= 1e-12 * f);
+  CHECK((contacts[0].tangential - Eigen::Vector3d(-f * (1 - cosine), 0, 0)).norm() <= 1e-12 * f);
+  CHECK(effective_friction(contacts) == Approx((1 - cosine) / cosine).epsilon(1e-12));
 }
 
 TEST_CASE("shell contacts: apart by more than 2 R_v no contact, a sheared pair has a tangential part",

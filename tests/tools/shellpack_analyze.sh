@@ -16,7 +16,7 @@ cli_tool=shellpack
 enter_scratch_dir
 
 # pack OUT N A sc|fcc "PERIODIC FLAGS" [KEY=VALUE lines...]: N^3 cubic cells of side A, one
-# icosphere (162 vertices, radius 0.55) per lattice site, as a packing OFF.
+# icosphere (42 vertices, radius 0.55) per lattice site, as a packing OFF.
 pack() {
   [ -f cell.off ] || "$rndmesh" icosa --level 2 -r 0.55 -o cell.off -q || fail "rndmesh"
   python3 - cell.off "$@" <<'PY' || fail "writing $1"
@@ -102,8 +102,9 @@ case_walls() {
   expect_error 2 "walls.off: not periodic on every axis: no g(r) for --rdf" run walls.off -o out.csv --rdf out_rdf.csv
 }
 case_plates_pressure_over_coverage_near_turgor() {
-  # Fig. 4.5b on one shell (scripts/analyze_plates_table.sh): a membrane squeezed between
-  # plates by shellpack shell; P / Theta (the mean stress on the contact patch) is near Pi.
+  # Fig. 4.5b on one shell (scripts/analyze_plates_table.sh, there at 2562 vertices): a
+  # 642-vertex membrane squeezed between plates by shellpack shell; P / Theta (the mean
+  # stress on the contact patch) is near Pi.
   "$rndmesh" icosa --level 4 -r 1 -o c4.off -q || fail "rndmesh"
   "$shellpack" shell --mesh c4.off -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume --walls 2.1 \
     --squeeze 0.3 --squeeze-steps 3 -q -o squeezed.off >squeezed.csv || fail "shellpack shell"
