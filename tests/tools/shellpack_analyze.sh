@@ -15,8 +15,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=shellpack
 enter_scratch_dir
 
-# pack OUT N A sc|fcc "PERIODIC FLAGS" [KEY=VALUE lines...]: N^3 cubic cells of side A, one
-# icosphere (42 vertices, radius 0.55) per lattice site, as a packing OFF.
+# pack OUT N A sc|fcc[-wrapped] "PERIODIC FLAGS" [KEY=VALUE lines...]: N^3 cubic cells of side
+# A, one icosphere (42 vertices, radius 0.55) per lattice site, as a packing OFF (-wrapped:
+# every vertex wrapped into the box, so shells are cut by its faces).
 pack() {
   [ -f cell.off ] || "$rndmesh" icosa --level 2 -r 0.55 -o cell.off -q || fail "rndmesh"
   python3 - cell.off "$@" <<'PY' || fail "writing $1"
@@ -28,6 +29,8 @@ lines = [l for l in open(cell) if l.strip() and not l.startswith('#')]
 nv, nf = map(int, lines[1].split()[:2])
 V = [list(map(float, l.split())) for l in lines[2:2 + nv]]
 F = [list(map(int, l.split()[1:4])) for l in lines[2 + nv:2 + nv + nf]]
+wrap = kind.endswith('-wrapped')  # vertices wrapped into the box: shells cut by its faces
+kind = kind.replace('-wrapped', '')
 basis = [(0, 0, 0)] if kind == 'sc' else [(0, 0, 0), (.5, .5, 0), (.5, 0, .5), (0, .5, .5)]
 sites = [tuple(a * (c + b + .25) for c, b in zip(ijk, bb)) for ijk in itertools.product(range(n), repeat=3) for bb in basis]
 L = n * a
@@ -36,7 +39,7 @@ with open(out, 'w') as o:
     for e in extra: o.write('# %s\n' % e.replace('{K}', ' '.join(['0.5'] * len(sites))))
     o.write('%d %d 0\n' % (nv * len(sites), nf * len(sites)))
     for s in sites:
-        for v in V: o.write('%r %r %r\n' % tuple(x + c for x, c in zip(v, s)))
+        for v in V: o.write('%r %r %r\n' % tuple((x + c) % L if wrap else x + c for x, c in zip(v, s)))
     for k in range(len(sites)):
         for f in F: o.write('3 %d %d %d\n' % tuple(i + k * nv for i in f))
 PY
@@ -67,6 +70,19 @@ case_simple_cubic() {
   [ "$(col out.csv bending)" = none ] || fail "bending"
   [ -z "$(col out.csv wall_pressure_P)" ] || fail "a wall pressure without walls"
   awk -v f="$(col out.csv force_normal_mean_F)" 'BEGIN { exit !(f > 0) }' || fail "normal force"
+}
+case_wrapped_shells() {
+  # Shells cut by the periodic faces are unwrapped along their edges (as percolate does): the
+  # same numbers as when written whole.
+  pack whole.off 2 1.4142135623730951 fcc "1 1 1" "${keys[@]}" "vertex_radius=0.1"
+  pack cut.off 2 1.4142135623730951 fcc-wrapped "1 1 1" "${keys[@]}" "vertex_radius=0.1"
+  run whole.off -o out_whole.csv && run cut.off -o out_cut.csv || fail "analyze"
+  [ "$(col out_cut.csv Z)" = 12 ] || fail "Z of the cut shells: $(col out_cut.csv Z)"
+  for c in phi Z force_normal_mean_F asphericity_mean_d02 voronoi_faces_mean; do
+    awk -v a="$(col out_whole.csv $c)" -v b="$(col out_cut.csv $c)" \
+      'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a; exit !(d <= 1e-9 * s + 1e-15) }' ||
+      fail "$c: $(col out_whole.csv $c) whole, $(col out_cut.csv $c) cut"
+  done
 }
 case_tables() {
   pack fcc.off 2 1.4142135623730951 fcc "1 1 1" "${keys[@]}" "vertex_radius=0.1" "volume0={K}"  # the last R_v counts
