@@ -12,7 +12,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
 BENCH_PACKAGES := libplb-dev libopenmpi-dev
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure shell-figures run install clean clean-results
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure shell-figures compress-figures run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -80,6 +80,10 @@ jamming-figure: deps all
 # Figs B.4-B.10: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
 shell-figures: deps all
 	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
+
+# Figs 4.3-4.6 at N = 32: shellpack jam -> compress -> analyze -> kcfit (COMPRESS_N, COMPRESS_LEVEL; $(OUT)/figures/).
+compress-figures: deps all
+	@scripts/compress_figures.sh $(BUILD) $(OUT)/figures
 
 # Fig. 5.2C-D's trend on jammed spheres: shellpack jam -> percolate -> kcfit ($(OUT)/figures/).
 percolation-figure: deps all
