@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "neighbours/cell_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cmp::shell {
@@ -25,6 +26,7 @@ VertexContacts::VertexContacts(const mesh::TriMesh& rest, const ContactParameter
   validate(p, "hertz-vertices");
   check_faces(rest, "hertz-vertices");
   shell_of_ = shell_partition(rest.F, static_cast<int>(rest.V.rows())).vertex_shell;
+  if (p.box) set_box(*p.box, p.box_periodic);
 }
 
 template <class Fn>
@@ -39,7 +41,22 @@ void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
   box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
   if (!box.lower.allFinite() || !box.lengths.allFinite())
     throw ComputationError("hertz-vertices: a vertex position is not finite");
-  neighbours::CellGrid grid(box, cutoff);
+  Eigen::Vector3i cells = Eigen::Vector3i::Zero();
+  if (box_) {
+    // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
+    // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
+    // one cell per vertex is enough and visits far fewer cells.
+    for (int a = 0; a < 3; ++a)
+      if (box_->periodic[a]) {
+        box.lower[a] = 0;
+        box.lengths[a] = box_->lengths[a];
+        box.periodic[a] = true;
+      }
+    const Eigen::Vector3i most = neighbours::CellGrid(box, cutoff).cells_per_axis();
+    const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(n))));
+    for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
+  }
+  neighbours::CellGrid grid(box, cutoff, cells);
   grid.build(scratch_);
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d& d, double r2) {
     if (shell_of_[i] == shell_of_[j]) return;
@@ -67,6 +84,27 @@ void VertexContacts::add_gradient(std::span<const double> x, std::span<double> g
       G[3 * j + a] -= s * d[a];
     }
   });
+}
+
+void VertexContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) {
+  for (int a = 0; a < 3; ++a) {
+    if (!(lengths[a] > 0) || !std::isfinite(lengths[a]))
+      throw UsageError("hertz-vertices: box side " + std::to_string(lengths[a]) + " is not positive and finite");
+    if (periodic[a] && !(lengths[a] >= 4.0 * radius_))
+      throw UsageError("hertz-vertices: the periodic box side " + std::to_string(lengths[a]) +
+                       " is shorter than 4 vertex radii (" + std::to_string(4.0 * radius_) + ")");
+  }
+  box_ = BoxSides{lengths, periodic};
+}
+
+std::vector<VertexContacts::Contact> VertexContacts::contacts(std::span<const double> x) const {
+  check_sizes(x);
+  std::vector<Contact> out;
+  for_each_contact(x, [&](int i, int j, const Eigen::Vector3d& d, double r) {
+    const double h = 2.0 * radius_ - r;
+    out.push_back({i, j, d, r, h, hertz_force(h, estar_, 0.5 * radius_)});
+  });
+  return out;
 }
 
 std::vector<char> VertexContacts::touching(std::span<const double> x) const {
