@@ -94,6 +94,7 @@ double rest_diameter_for_inflated(const mesh::TriMesh& cell, const ShellModel& m
     rest.V *= d;
     ShellSystem s = make_shell_system(rest, m);
     RelaxParameters rp = relax;
+    rp.fire.max_iterations = std::max(rp.fire.max_iterations, 1'000'000L);  // one shell: not the packing's cap
     rp.force_scale = default_force_scale(rest, m.material.youngs_modulus, m.material.thickness);
     const auto r = shell::relax(s, rp);
     if (!r.converged())

@@ -52,7 +52,8 @@ ShellPacking place_shells(const io::SpherePackingFrame& spheres, const mesh::Tri
 // The rest diameter (volume-equivalent, in D_0) of the normalised template whose shell,
 // inflated alone at the model's turgor (model.load.turgor, the "turgor" pressure style; model's
 // stretching, bending and material), has volume-equivalent diameter 1: three fixed-point
-// steps d <- d / D_inflated (the strain depends weakly on d at a fixed thickness).
+// steps d <- d / D_inflated (the strain depends weakly on d at a fixed thickness). FIRE's
+// iteration cap is raised to at least 10^6 here (one shell; the cap is meant for the packing).
 double rest_diameter_for_inflated(const mesh::TriMesh& cell, const ShellModel& model, const RelaxParameters& relax);
 
 // The largest circumradius of the template's triangles (normalised_cell: diameter 1).

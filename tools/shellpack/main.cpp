@@ -337,7 +337,15 @@ int main(int argc, char** argv) {
     if (structure->parsed()) packrun::run_structure_batch(o.structure, provenance);
     if (sh->parsed()) packrun::run_shell_job(o.shell, provenance);
     if (bench->parsed()) run_bench_mechanics(o, provenance);
-    if (cp->parsed()) packrun::run_compress_job(o.compress, provenance);
+    if (cp->parsed()) {
+      // The run as the checkpoint records it (without --resume, --threads, ...): an interrupted
+      // and resumed run then writes the same provenance, so the same bytes, as one never stopped.
+      std::vector<std::string> run_args{"shellpack", "compress"};
+      run_args.insert(run_args.end(), o.compress.checkpoint_args.begin(), o.compress.checkpoint_args.end());
+      std::vector<char*> run_argv;
+      for (auto& a : run_args) run_argv.push_back(a.data());
+      packrun::run_compress_job(o.compress, cli::provenance("shellpack", static_cast<int>(run_argv.size()), run_argv.data()));
+    }
     return 0;
   });
 }
