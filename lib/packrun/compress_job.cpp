@@ -242,13 +242,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     csv.meta("units", "lengths in D0 (the inflated shell's volume-equivalent diameter), pressures and moduli in E "
                       "(_E) or Pi_0 (_P0), energies in E D0^3 (_Ed3); residual = max |f_i| / (E t a), a the mean rest "
                       "edge length; pressure = contact virial");
-    csv.meta("stretching", m.stretching);
-    csv.meta("bending", m.bending.empty() ? "none" : m.bending);
-    csv.meta("pressure_model", m.pressure);
-    csv.meta("E", io::format_number(m.material.youngs_modulus));
-    csv.meta("nu", io::format_number(m.material.poisson_ratio));
-    csv.meta("thickness", io::format_number(m.material.thickness));
-    csv.meta("vertex_radius", io::format_number(m.contact.vertex_radius));
+    shell::write_model_meta(csv, m, "thickness");
     csv.meta("P0", io::format_number(o.turgor0));
     csv.meta("box_step", io::format_number(o.step));
     csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
@@ -266,18 +260,24 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     for (const auto& r : rows) csv.row(split_cells(r));
     csv_out->commit();
   };
+  // After every step: a vertex inside another shell ends the run (the checkpoint keeps the last
+  // step without one).
+  const auto check_penetration = [&](const shell::CompressionRow& row) {
+    if (!job.check_penetration) return;
+    const auto& s = run.system();
+    const auto found = shell::penetrations(s.x, s.rest().F, s.shells(), run.box(), run.packing().periodic);
+    if (found.empty()) return;
+    save();
+    bar.finish();
+    throw ComputationError(fmt::format(
+        "step {} (phi {}): vertex {} of shell {} lies inside shell {} ({} vertices inside other shells): the shells "
+        "pass through each other; raise --vertex-radius or lower --step{}",
+        row.step, io::format_number(row.phi), found.front().vertex, found.front().vertex_shell, found.front().shell,
+        found.size(), job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
+  };
   const auto write_packing = [&](std::size_t target) {
     const double phi = o.targets[target];
     const auto& s = run.system();
-    if (job.check_penetration) {
-      const auto found = shell::penetrations(s.x, s.rest().F, s.shells(), run.box(), run.packing().periodic);
-      if (!found.empty())
-        throw ComputationError(fmt::format(
-            "at phi = {}: vertex {} of shell {} lies inside shell {} ({} vertices inside other shells): the shells "
-            "pass through each other; raise --vertex-radius or lower --step",
-            io::format_number(phi), found.front().vertex, found.front().vertex_shell, found.front().shell,
-            found.size()));
-    }
     if (job.output_pattern.empty()) return;
     io::PackingInfo info;
     info.box = run.box();
@@ -330,6 +330,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                        " holds the last converged step (continue with --resume, e.g. with a higher "
                                        "--fire-max-iterations)"));
     }
+    check_penetration(row);
     rows.push_back(format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
     if (row.target) write_packing(*row.target);
     remember();

@@ -3,8 +3,8 @@
 // checked before any work (a periodic jammed sphere packing, a closed outward cell mesh, the
 // targets above the starting phi), the shells built and inflated, then box steps until the last
 // target phi, with
-//   - one packing OFF per target (-o with {phi}; docs/formats.md, the `# key=value` lines
-//     below), each checked for shells passing through each other (shell/penetration.hpp);
+//   - one packing OFF per target (-o with {phi}; docs/formats.md, the `# key=value` lines);
+//   - after every step, a check that no shell passes through another (shell/penetration.hpp);
 //   - compress.csv, one row per box step, written at the end (atomically);
 //   - a progress bar (phi, step, residual) on a terminal;
 //   - a checkpoint (io/checkpoint_file.hpp) every checkpoint_every seconds and at the end, from
@@ -31,7 +31,7 @@ struct CompressJob {
   long stop_after_steps = 0;       // stop (checkpoint, table so far) after this many box steps of this process; 0 never
   std::uint64_t seed = 1;          // rotations of the shells
   double vertex_radius = 0;        // R_v [D_0]; 0: default_vertex_radius
-  bool check_penetration = true;   // point-in-mesh check at every output
+  bool check_penetration = true;   // point-in-mesh check after every step
   bool timings = false;            // `seconds` column
   bool quiet = false;
   shell::CompressionOptions run;   // model (material in units of E, t in D_0), Pi_0, step, targets, relax

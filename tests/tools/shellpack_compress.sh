@@ -22,6 +22,8 @@ make_start() {
 compress() { "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 -q "$@"; }
 col() { awk -F, -v c="$2" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == c) k = i; h = 1; next } { print $k }' "$1"; }
 key() { sed -n "s/^# $2=//p" "$1"; }
+# bad_start PACKING MESH PATTERN: the run is refused before any work, exit 2.
+bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0.7 -o out.off; }
 
 case_help() {
   "$shellpack" compress --help >help.txt || fail "--help"
@@ -111,28 +113,28 @@ case_iteration_cap_exit_1_with_checkpoint() {
 case_bad_packing_duplicate() {
   make_start
   awk 'NR == 3 { print; print; next } NR == 1 { print $1 + 1; next } { print }' jammed.xyz >dup.xyz
-  expect_error 2 "dup.xyz:4: .*duplicate" "$shellpack" compress dup.xyz --mesh cell.off --phi 0.7 -o out.off
+  bad_start dup.xyz cell.off "dup.xyz:4: .*duplicate"
 }
 case_bad_packing_overlap() {
   make_start
   # Sphere 2 moved onto sphere 1 (a quarter diameter away).
   awk 'NR == 3 { x = $2; y = $3; z = $4 } NR == 4 { $2 = x + 0.25; $3 = y; $4 = z } { print }' jammed.xyz >ov.xyz
-  expect_error 2 "ov.xyz:4: sphere 2 overlaps sphere 1" "$shellpack" compress ov.xyz --mesh cell.off --phi 0.7 -o out.off
+  bad_start ov.xyz cell.off "ov.xyz:4: sphere 2 overlaps sphere 1"
 }
 case_bad_packing_no_box() {
   make_start
   sed 's/Lattice="[^"]*" //' jammed.xyz >nobox.xyz
-  expect_error 2 "nobox.xyz:[0-9]*: .*Lattice" "$shellpack" compress nobox.xyz --mesh cell.off --phi 0.7 -o out.off
+  bad_start nobox.xyz cell.off "nobox.xyz:[0-9]*: .*Lattice"
 }
 case_bad_mesh_open() {
   make_start
   awk '!/^#/ && NR > 1 && !done && /^3 / { done = 1; next } { print }' cell.off | sed '0,/^162 320 0$/s//162 319 0/' >open.off
-  expect_error 2 "open.off: a pressurised shell needs a closed manifold" "$shellpack" compress jammed.xyz --mesh open.off --phi 0.7 -o out.off
+  bad_start jammed.xyz open.off "open.off: a pressurised shell needs a closed manifold"
 }
 case_bad_mesh_inward() {
   make_start
   awk '/^3 / { print $1, $2, $4, $3; next } { print }' cell.off >inward.off
-  expect_error 2 "inward.off: the faces of shell 0 are oriented inward" "$shellpack" compress jammed.xyz --mesh inward.off --phi 0.7 -o out.off
+  bad_start jammed.xyz inward.off "inward.off: the faces of shell 0 are oriented inward"
 }
 case_bad_targets() {
   make_start

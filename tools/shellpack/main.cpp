@@ -312,7 +312,7 @@ int main(int argc, char** argv) {
     tool.add_long(*cp, "--stop-after-steps", cj.stop_after_steps,
                   "stop after this many box steps (checkpoint and table so far; for tests)", cli::non_negative());
     cp->add_flag("--no-penetration-check", o.no_penetration_check,
-                 "skip the check that no vertex lies inside another shell at each output");
+                 "skip the check, after every step, that no vertex lies inside another shell");
     cp->add_flag("--timings", cj.timings, "add the wall time of each step (`seconds`) to the CSV");
     tool.add_common(*cp, o.common, cli::Tool::kSeed | cli::Tool::kThreads | cli::Tool::kQuiet);
 
