@@ -1,7 +1,8 @@
 #pragma once
 // lbflow's checkpoint file: what `lbflow --resume FILE` needs to continue a run to exactly the
-// result of an uninterrupted one. A text header naming the run (the command-line arguments
-// that define it, so `--resume FILE` alone repeats them), then the solver's own binary state
+// result of an uninterrupted one. The container of io/checkpoint_file.hpp: a text header
+// naming the run (the command-line arguments that define it, so `--resume FILE` alone repeats
+// them), then the solver's own binary state
 // (lbm::FlowSolver::save: populations, step count, fingerprint of lattice and settings, and
 // the convergence checks so far):
 //   lbflow checkpoint 1

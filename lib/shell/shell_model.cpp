@@ -2,7 +2,19 @@
 
 #include "shell/styles.hpp"
 
+#include "io/csv.hpp"
+
 namespace cmp::shell {
+
+void write_model_meta(io::CsvWriter& csv, const ShellModel& m, const std::string& thickness_key) {
+  csv.meta("stretching", m.stretching);
+  csv.meta("bending", m.bending.empty() ? "none" : m.bending);
+  csv.meta("pressure_model", m.pressure);
+  csv.meta("E", io::format_number(m.material.youngs_modulus));
+  csv.meta("nu", io::format_number(m.material.poisson_ratio));
+  csv.meta(thickness_key, io::format_number(m.material.thickness));
+  csv.meta("vertex_radius", io::format_number(m.contact.vertex_radius));
+}
 
 ShellSystem make_shell_system(const mesh::TriMesh& rest, const ShellModel& m) {
   ShellSystem s(rest);

@@ -6,6 +6,10 @@
 
 #include <string>
 
+namespace cmp::io {
+class CsvWriter;
+}
+
 namespace cmp::shell {
 
 struct ShellModel {
@@ -18,6 +22,10 @@ struct ShellModel {
   bool shell_contacts = false;     // add hertz-vertices (between the shells of the mesh)
   ContactParameters contact;
 };
+
+// The model as `# key=value` lines of a CSV: stretching, bending (or none), pressure_model, E, nu,
+// the thickness under `thickness_key` ("t" in shellpack shell's table) and vertex_radius.
+void write_model_meta(io::CsvWriter& csv, const ShellModel& model, const std::string& thickness_key);
 
 // The system of `rest` with the model's terms, in the order stretching, bending, pressure,
 // walls, shell contacts. Throws cmp::UsageError for an unknown style name or bad parameters.

@@ -2,7 +2,9 @@
 // Typed parameters of the shell styles, checked once when a style is built.
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace cmp::shell {
@@ -55,6 +57,10 @@ struct ContactParameters {
   double wall_modulus = std::numeric_limits<double>::infinity();  // E_w, > 0; infinity: rigid
   double wall_poisson_ratio = 0.5;  // nu_w, in (-1, 0.5]
   std::vector<Plane> walls;       // unit normals
+  // hertz-vertices: the box [0, L) of a packing, periodic along the flagged axes (minimum
+  // image), or none (open space). See VertexContacts::set_box.
+  std::optional<Eigen::Vector3d> box;
+  std::array<bool, 3> box_periodic{true, true, true};
 
   double vertex_effective_modulus() const { return youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio)); }
   double wall_effective_modulus() const {

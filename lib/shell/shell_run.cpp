@@ -134,13 +134,7 @@ void write_shell_table(std::ostream& out, const ShellRunResult& r, const ShellRu
   csv.meta("units", "u = the mesh's length unit, P = the unit of E and --pressure; _u lengths, _u2 areas, "
                     "_u3 volumes, _P pressures, _F forces (P u^2), _W energies (P u^3); residual = max |f_i| / (E t a), "
                     "a the mean rest edge length");
-  csv.meta("stretching", m.stretching);
-  csv.meta("bending", m.bending.empty() ? "none" : m.bending);
-  csv.meta("pressure_model", m.pressure);
-  csv.meta("E", io::format_number(m.material.youngs_modulus));
-  csv.meta("nu", io::format_number(m.material.poisson_ratio));
-  csv.meta("t", io::format_number(m.material.thickness));
-  csv.meta("vertex_radius", io::format_number(m.contact.vertex_radius));
+  write_model_meta(csv, m, "t");
   csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
   std::vector<std::string> header{"step",         "stage",          "pressure_P",    "turgor_P",     "gap_u",
                                   "volume_u3",    "area_u2",        "gyration1_u2",  "gyration2_u2", "gyration3_u2",

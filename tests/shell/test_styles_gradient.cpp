@@ -4,7 +4,10 @@
 //   - energy invariant under rigid translations and rotations (contacts: those that keep the
 //     walls, on two overlapping shells)
 //   - stretching and bending: zero energy and zero gradient on the rest mesh
+#include "shell/hertz_contacts.hpp"
 #include "shell/styles.hpp"
+
+#include "core/errors.hpp"
 
 #include "shell_fixtures.hpp"
 
@@ -178,4 +181,48 @@ TEST_CASE("style tables have unique names and one-line descriptions and find by 
                                                  Catch::Contains("svk") && Catch::Contains("springs-kot"));
   CHECK_THROWS_WITH(bending_style("none"), Catch::Contains("unknown bending model 'none' (known: hinge, hinge-uniform)"));
   CHECK_THROWS_WITH(pressure_style(""), Catch::Contains("unknown pressure model ''"));
+}
+
+TEST_CASE("hertz-vertices in a periodic box: forces match the energy, and a shell may sit in any image",
+          "[shell][styles]") {
+  // Two overlapping shells (as above) in a periodic box of side 6 along every axis, placed so
+  // that the contact region straddles the x = 0 face: the pairs are found only through the
+  // minimum image.
+  ContactParameters p = contact_parameters();
+  p.walls.clear();
+  const double L = 6.0;
+  p.box = Eigen::Vector3d(L, L, L);
+  for (unsigned seed : {1u, 2u}) {
+    INFO("seed " << seed);
+    const auto rest = two_shells(seed);
+    const auto periodic = contact_style("hertz-vertices").make(rest, p);
+    ContactParameters open = p;
+    open.box.reset();
+    const auto free = contact_style("hertz-vertices").make(rest, open);
+    auto x = deformed(rest, 200 + seed);
+    // Centre the pair on the x = 0 face: the first shell's vertices at x < 0 wrap to x ~ L.
+    x = fx::moved(x, Eigen::Matrix3d::Identity(), Eigen::Vector3d(-0.97, 1.0, 2.0));
+    const double e = free->energy(x);
+    REQUIRE(e > 0);
+    CHECK(periodic->energy(x) == Approx(e).epsilon(1e-13));
+    CHECK(gradient_error(*periodic, x, 1e-6) < 1e-7);
+    // Shift the second shell by box vectors: the open-space energy drops to zero, the periodic
+    // one stays (the same pairs, the same distances up to round-off of the shift).
+    const long half = rest.V.rows() / 2;
+    auto y = x;
+    for (long v = half; v < rest.V.rows(); ++v) {
+      y[3 * v] += L;
+      y[3 * v + 1] -= 2 * L;
+      y[3 * v + 2] += 3 * L;
+    }
+    CHECK(free->energy(y) == 0.0);
+    CHECK(periodic->energy(y) == Approx(e).epsilon(1e-11));
+    CHECK(gradient_error(*periodic, y, 1e-6) < 1e-7);
+    // A box with a side under 4 R_v is refused.
+    auto* vc = dynamic_cast<VertexContacts*>(periodic.get());
+    REQUIRE(vc);
+    CHECK_THROWS_AS(vc->set_box(Eigen::Vector3d(L, 0.5, L), {true, true, true}), cmp::UsageError);
+    CHECK_NOTHROW(vc->set_box(Eigen::Vector3d(L, 0.5, L), {true, false, true}));
+    CHECK(periodic->energy(x) == Approx(e).epsilon(1e-13));
+  }
 }

@@ -1,0 +1,360 @@
+#include "packrun/compress_job.hpp"
+
+#include "shell/penetration.hpp"
+
+#include "cli/progress.hpp"
+#include "core/errors.hpp"
+#include "io/atomic_output.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/csv.hpp"
+#include "io/off.hpp"
+#include "io/parse_number.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace cmp::packrun {
+
+namespace {
+
+constexpr const char* kMagic = "shellpack compress checkpoint 1";
+constexpr const char* kWhat = "a shellpack compress checkpoint";
+
+double round12(double v) { return std::stod(fmt::format("{:.12g}", v)); }
+
+double parse_one(const std::string& text) {
+  double v = 0;
+  if (!io::try_parse_double(text, v) || !std::isfinite(v)) throw UsageError("'" + text + "' is not a number");
+  return v;
+}
+
+// FNV-1a over the bytes of what defines the shells: the spheres, the cell, the seed.
+struct Fingerprint {
+  std::uint64_t h = 1469598103934665603ULL;
+  void add(const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ULL;
+  }
+  template <class T>
+  void add(const T& v) {
+    add(&v, sizeof v);
+  }
+};
+
+std::string replace_phi(const std::string& pattern, const std::string& phi) {
+  std::string out = pattern;
+  for (std::size_t at; (at = out.find("{phi}")) != std::string::npos;) out.replace(at, 5, phi);
+  return out;
+}
+
+std::string join(const std::vector<double>& v) {
+  std::string s;
+  for (double x : v) s += (s.empty() ? "" : " ") + io::format_number(x);
+  return s;
+}
+
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  return cells;
+}
+
+}  // namespace
+
+std::vector<double> parse_phi_targets(const std::string& text) {
+  std::vector<double> out;
+  if (text.find(':') != std::string::npos) {
+    std::vector<double> p;
+    std::string part;
+    std::istringstream in(text);
+    while (std::getline(in, part, ':')) p.push_back(parse_one(part));
+    if (p.size() != 3) throw UsageError("expected START:STOP:STEP or a comma-separated list, got '" + text + "'");
+    if (!(p[2] > 0)) throw UsageError("the step of '" + text + "' must be positive");
+    if (!(p[1] >= p[0])) throw UsageError("STOP must not be below START in '" + text + "'");
+    const long n = static_cast<long>(std::floor((p[1] - p[0]) / p[2] + 1e-9));
+    if (n > 100000) throw UsageError("'" + text + "' names more than 100000 targets");
+    for (long k = 0; k <= n; ++k) out.push_back(round12(p[0] + static_cast<double>(k) * p[2]));
+  } else {
+    std::string part;
+    std::istringstream in(text);
+    while (std::getline(in, part, ',')) out.push_back(round12(parse_one(part)));
+  }
+  if (out.empty()) throw UsageError("no target given");
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (!(out[k] > 0) || out[k] > 1)
+      throw UsageError("target " + io::format_number(out[k]) + " must lie in (0, 1] (a volume fraction)");
+    if (k > 0 && !(out[k] > out[k - 1])) throw UsageError("the targets must increase, got '" + text + "'");
+  }
+  return out;
+}
+
+std::vector<std::string> compress_checkpoint_args(const std::string& path) {
+  auto in = io::open_checkpoint(path);
+  return io::read_checkpoint_header(in, path, kMagic, kWhat);
+}
+
+double default_vertex_radius(double thickness, double max_circumradius) {
+  return std::max(thickness, 0.75 * max_circumradius);
+}
+
+void run_compress_job(const CompressJob& job, const std::string& provenance_now) {
+  using clock = std::chrono::steady_clock;
+  // Inputs, checked before any work.
+  const auto spheres = shell::read_start_packing(job.packing_path);
+  const auto off = io::read_off(job.mesh_path);
+  const auto cell = shell::normalised_cell(mesh::TriMesh{off.V, off.F}, job.mesh_path);
+  shell::CompressionOptions o = job.run;
+  auto& m = o.model;
+  m.contact.youngs_modulus = m.material.youngs_modulus;
+  m.contact.poisson_ratio = m.material.poisson_ratio;
+  const double largest = spheres.radii.maxCoeff() / spheres.radii.mean();
+  m.contact.vertex_radius = job.vertex_radius > 0
+                                ? job.vertex_radius
+                                : default_vertex_radius(m.material.thickness, shell::max_circumradius(cell) * largest);
+  shell::ShellModel inflate = m;
+  inflate.load.turgor = o.turgor0;
+  const double rest_diameter = shell::rest_diameter_for_inflated(cell, inflate, o.relax);
+  shell::Compression run(shell::place_shells(spheres, cell, rest_diameter, 2.0 * m.contact.vertex_radius, job.seed), o);
+  const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
+
+  Fingerprint fp;
+  fp.add(spheres.centres.data(), sizeof(double) * static_cast<std::size_t>(spheres.centres.size()));
+  fp.add(spheres.radii.data(), sizeof(double) * static_cast<std::size_t>(spheres.radii.size()));
+  fp.add(spheres.box.data(), 3 * sizeof(double));
+  fp.add(cell.V.data(), sizeof(double) * static_cast<std::size_t>(cell.V.size()));
+  fp.add(cell.F.data(), sizeof(int) * static_cast<std::size_t>(cell.F.size()));
+  fp.add(job.seed);
+  fp.add(m.contact.vertex_radius);
+
+  std::string provenance = provenance_now;
+  std::vector<std::string> rows;
+  const std::size_t max_rows = 100'000'000;
+  cli::ProgressBar bar("compressing", 1.0, job.quiet);
+  long iterations_note = 0;
+  const auto note = [&](double residual) {
+    bar.set_note(fmt::format("phi {:.4f}, step {}, residual {:.2e}", run.phi(), run.step_index(), residual));
+  };
+  const shell::RelaxProgress progress = [&](long iterations, double residual) {
+    iterations_note = iterations;
+    note(residual);
+    return true;
+  };
+  const auto term_names = run.term_names();
+  const auto format_row = [&](const shell::CompressionRow& r, double seconds) {
+    const auto f = [](double v) { return io::format_number(v); };
+    std::string s = std::to_string(r.step);
+    for (double v : {r.phi, r.dphi, r.box_side, r.pressure, r.turgor_mean, r.turgor_cv, r.Z, r.dZ})
+      s += "," + f(v);
+    s += "," + std::to_string(r.contacts);
+    for (double v : {r.asphericity, r.delta_eps, r.volume_error, r.energy}) s += "," + f(v);
+    for (double e : r.term_energies) s += "," + f(e);
+    s += "," + f(r.relax.residual) + "," + std::to_string(r.relax.iterations) + "," +
+         std::to_string(r.relax.volume_updates) + "," + shell::relax_stop_name(r.relax.stop);
+    if (job.timings) s += "," + f(seconds);
+    return s;
+  };
+
+  // The checkpoint: the state after the last converged step.
+  std::optional<shell::CompressionState> saved;
+  std::size_t saved_rows = 0;
+  const auto save = [&] {
+    if (job.checkpoint.empty() || !saved) return;
+    io::AtomicOutput out(job.checkpoint);
+    auto& s = out.stream();
+    io::write_checkpoint_header(s, kMagic, job.checkpoint_args);
+    io::put(s, fp.h);
+    io::put(s, provenance);
+    io::put(s, saved->step);
+    for (int a = 0; a < 3; ++a) io::put(s, saved->box[a]);
+    io::put(s, static_cast<std::uint64_t>(saved->next_target));
+    io::put(s, saved->phi_jammed);
+    io::put(s, std::vector<double>(saved->x.data(), saved->x.data() + saved->x.size()));
+    io::put(s, saved->turgor);
+    io::put(s, saved->volume0);
+    io::put(s, static_cast<std::uint64_t>(saved_rows));
+    for (std::size_t k = 0; k < saved_rows; ++k) io::put(s, rows[k]);
+    out.commit();
+  };
+  const auto remember = [&] {
+    saved = run.state();
+    saved_rows = rows.size();
+  };
+
+  if (!job.resume.empty()) {
+    auto in = io::open_checkpoint(job.resume);
+    io::read_checkpoint_header(in, job.resume, kMagic, kWhat);
+    io::CheckpointReader r(in, job.resume);
+    if (r.get<std::uint64_t>() != fp.h)
+      throw InputError(job.resume, 0,
+                       "the checkpoint belongs to another run (its sphere packing, cell mesh, seed or vertex radius "
+                       "differ from these)");
+    provenance = r.get_string(1 << 20);
+    shell::CompressionState st;
+    st.step = r.get<long>();
+    for (int a = 0; a < 3; ++a) st.box[a] = r.get<double>();
+    st.next_target = r.get<std::uint64_t>();
+    st.phi_jammed = r.get<double>();
+    const auto x = r.get_vector<double>(static_cast<std::uint64_t>(run.system().x.size()));
+    st.x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    st.turgor = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
+    st.volume0 = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
+    const auto n_rows = r.get<std::uint64_t>();
+    if (n_rows > max_rows) throw InputError(job.resume, 0, "truncated or damaged checkpoint");
+    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(r.get_string(1 << 20));
+    try {
+      run.restore(st);
+    } catch (const std::invalid_argument&) {
+      throw InputError(job.resume, 0, "the checkpoint belongs to another run (a state of another size)");
+    }
+  }
+  auto step_start = clock::now();
+  if (job.resume.empty()) {
+    note(0);
+    const auto row0 = run.start(progress);
+    if (!row0.relax.converged())
+      throw ComputationError(fmt::format("inflating the shells at Pi_0 stopped by {} at residual {} after {} FIRE "
+                                         "iterations (raise --fire-max-iterations)",
+                                         shell::relax_stop_name(row0.relax.stop), io::format_number(row0.relax.residual),
+                                         row0.relax.iterations));
+    rows.push_back(format_row(row0, std::chrono::duration<double>(clock::now() - step_start).count()));
+  }
+  for (double t : o.targets)
+    if (t < run.phi_jammed() && job.resume.empty())
+      throw UsageError(fmt::format("--phi: target {} is below the starting volume fraction phi_J = {} of these shells",
+                                   io::format_number(t), io::format_number(run.phi_jammed())));
+  remember();
+  const double span = std::max(o.targets.back() - run.phi_jammed(), 1e-12);
+  bar.update(0);
+
+  std::optional<io::AtomicOutput> csv_out;
+  if (!job.csv.empty()) csv_out.emplace(job.csv);
+  const auto write_table = [&] {
+    if (!csv_out) return;
+    io::CsvWriter csv(csv_out->stream());
+    csv.meta("provenance", provenance);
+    csv.meta("units", "lengths in D0 (the inflated shell's volume-equivalent diameter), pressures and moduli in E "
+                      "(_E) or Pi_0 (_P0), energies in E D0^3 (_Ed3); residual = max |f_i| / (E t a), a the mean rest "
+                      "edge length; pressure = contact virial");
+    shell::write_model_meta(csv, m, "thickness");
+    csv.meta("P0", io::format_number(o.turgor0));
+    csv.meta("box_step", io::format_number(o.step));
+    csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
+    csv.meta("seed", std::to_string(job.seed));
+    csv.meta("shells", std::to_string(n_shells));
+    csv.meta("vertices_per_shell", std::to_string(run.packing().shell_vertex_counts.front()));
+    csv.meta("phi_J", io::format_number(run.phi_jammed()));
+    std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
+                                    "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
+                                    "asphericity_d02", "delta_eps", "volume_error", "energy_Ed3"};
+    for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
+    for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
+    if (job.timings) header.push_back("seconds");
+    csv.header(header);
+    for (const auto& r : rows) csv.row(split_cells(r));
+    csv_out->commit();
+  };
+  // After every step: a vertex inside another shell ends the run (the checkpoint keeps the last
+  // step without one).
+  const auto check_penetration = [&](const shell::CompressionRow& row) {
+    if (!job.check_penetration) return;
+    const auto& s = run.system();
+    const auto found = shell::penetrations(s.x, s.rest().F, s.shells(), run.box(), run.packing().periodic);
+    if (found.empty()) return;
+    save();
+    bar.finish();
+    throw ComputationError(fmt::format(
+        "step {} (phi {}): vertex {} of shell {} lies inside shell {} ({} vertices inside other shells): the shells "
+        "pass through each other; raise --vertex-radius or lower --step{}",
+        row.step, io::format_number(row.phi), found.front().vertex, found.front().vertex_shell, found.front().shell,
+        found.size(), job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
+  };
+  const auto write_packing = [&](std::size_t target) {
+    const double phi = o.targets[target];
+    const auto& s = run.system();
+    if (job.output_pattern.empty()) return;
+    io::PackingInfo info;
+    info.box = run.box();
+    info.periodic = run.packing().periodic;
+    info.shell_vertex_counts = run.packing().shell_vertex_counts;
+    const auto* p = s.pressure();
+    const std::vector<std::string> comments{provenance,
+                                            "D0=1",
+                                            "phi=" + io::format_number(phi),
+                                            "E=" + io::format_number(m.material.youngs_modulus),
+                                            "nu=" + io::format_number(m.material.poisson_ratio),
+                                            "thickness=" + io::format_number(m.material.thickness),
+                                            "vertex_radius=" + io::format_number(m.contact.vertex_radius),
+                                            "P0=" + io::format_number(o.turgor0),
+                                            "bending=" + (m.bending.empty() ? std::string("none") : m.bending),
+                                            "stretching=" + m.stretching,
+                                            "pressure_model=" + m.pressure,
+                                            "step=" + std::to_string(run.step_index()),
+                                            "turgor=" + join(p->turgors()),
+                                            "volume0=" + join(p->target_volumes())};
+    mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
+    io::write_off(replace_phi(job.output_pattern, io::format_number(phi)), V, s.rest().F, comments, &info);
+  };
+
+  auto last_checkpoint = clock::now();
+  long steps_here = 0;
+  while (!run.done()) {
+    if (job.stop_after_steps > 0 && steps_here >= job.stop_after_steps) {
+      save();
+      bar.finish();
+      if (!job.quiet)
+        std::cerr << "shellpack: stopped after " << steps_here << " box steps as asked (phi " << run.phi() << ")"
+                  << (job.checkpoint.empty() ? "" : "; continue with shellpack compress --resume " + job.checkpoint)
+                  << "\n";
+      write_table();
+      return;
+    }
+    step_start = clock::now();
+    std::optional<shell::CompressionRow> attempt;
+    try {
+      attempt = run.advance(progress);
+    } catch (const ComputationError&) {
+      save();  // the last converged step
+      throw;
+    }
+    const auto& row = *attempt;
+    ++steps_here;
+    if (!row.relax.converged()) {
+      save();
+      bar.finish();
+      throw ComputationError(fmt::format(
+          "step {} (phi {}): the relaxation stopped by {} at residual {} (tolerance {}) after {} FIRE iterations{}",
+          row.step, io::format_number(row.phi), shell::relax_stop_name(row.relax.stop),
+          io::format_number(row.relax.residual), io::format_number(o.relax.relative_tolerance), row.relax.iterations,
+          job.checkpoint.empty() ? std::string()
+                                 : "; the checkpoint " + job.checkpoint +
+                                       " holds the last converged step (continue with --resume, e.g. with a higher "
+                                       "--fire-max-iterations)"));
+    }
+    check_penetration(row);
+    rows.push_back(format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
+    if (row.target) write_packing(*row.target);
+    remember();
+    bar.update(std::min(1.0, (run.phi() - run.phi_jammed()) / span));
+    note(row.relax.residual);
+    if (std::chrono::duration<double>(clock::now() - last_checkpoint).count() >= job.checkpoint_every) {
+      save();
+      last_checkpoint = clock::now();
+    }
+  }
+  (void)iterations_note;
+  save();
+  bar.finish();
+  write_table();
+  if (!job.quiet)
+    std::cerr << "shellpack: " << run.step_index() << " box steps from phi_J " << io::format_number(run.phi_jammed())
+              << " to " << io::format_number(run.phi()) << "\n";
+}
+
+}  // namespace cmp::packrun

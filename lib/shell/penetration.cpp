@@ -1,0 +1,49 @@
+#include "shell/penetration.hpp"
+
+#include "core/minimum_image.hpp"
+#include "mesh/point_in_mesh.hpp"
+
+#include <algorithm>
+
+namespace cmp::shell {
+
+std::vector<Penetration> penetrations(const Eigen::VectorXd& x, const mesh::FaceMatrix& F, const ShellPartition& shells,
+                                      const std::optional<Eigen::Vector3d>& box, std::array<bool, 3> periodic) {
+  const int k = shells.shell_count;
+  const long n = static_cast<long>(shells.vertex_shell.size());
+  // Faces of each shell as one list (faces need not be contiguous by shell).
+  std::vector<std::vector<int>> faces(static_cast<std::size_t>(k));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces[shells.face_shell[f]].push_back(static_cast<int>(f));
+  std::vector<Eigen::Vector3d> centre(k, Eigen::Vector3d::Zero());
+  std::vector<double> reach(k, 0.0), count(k, 0.0);
+  for (long v = 0; v < n; ++v) {
+    centre[shells.vertex_shell[v]] += x.segment<3>(3 * v);
+    count[shells.vertex_shell[v]] += 1;
+  }
+  for (int s = 0; s < k; ++s) centre[s] /= std::max(count[s], 1.0);
+  for (long v = 0; v < n; ++v) {
+    const int s = shells.vertex_shell[v];
+    reach[s] = std::max(reach[s], (x.segment<3>(3 * v) - centre[s]).norm());
+  }
+  std::vector<std::vector<Penetration>> found(static_cast<std::size_t>(k));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int s = 0; s < k; ++s) {
+    mesh::FaceMatrix Fs(static_cast<Eigen::Index>(faces[s].size()), 3);
+    for (std::size_t f = 0; f < faces[s].size(); ++f) Fs.row(static_cast<Eigen::Index>(f)) = F.row(faces[s][f]);
+    for (long v = 0; v < n; ++v) {
+      if (shells.vertex_shell[v] == s) continue;
+      Eigen::Vector3d d = x.segment<3>(3 * v) - centre[s];
+      if (box)
+        for (int a = 0; a < 3; ++a)
+          if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
+      if (d.norm() > reach[s]) continue;
+      if (mesh::winding_number(x.data(), Fs, 0, Fs.rows(), centre[s] + d) > 0.5)
+        found[s].push_back({static_cast<int>(v), shells.vertex_shell[v], s});
+    }
+  }
+  std::vector<Penetration> all;
+  for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
+}
+
+}  // namespace cmp::shell

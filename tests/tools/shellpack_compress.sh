@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# shellpack compress as a user runs it: 16 shells of 162 vertices from a jammed packing,
+# compressed in coarse box steps. `shellpack_compress.sh --list` prints the cases;
+# `shellpack_compress.sh CASE` runs one (ctest registers each). Needs CMP_BIN.
+set -uo pipefail
+bin=${CMP_BIN:-build/bin}
+if [ "${1:-}" != --list ]; then
+  case $bin in /*) ;; *) bin="$PWD/$bin" ;; esac
+fi
+shellpack="$bin/shellpack"
+rndmesh="$bin/rndmesh"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+cli_tool=shellpack
+enter_scratch_dir
+
+# The start: a jammed packing of 16 spheres and an icosahedral cell of 162 vertices.
+make_start() {
+  "$shellpack" jam -N 16 --seed 3 -o jammed.xyz -q >/dev/null || fail "jam"
+  "$rndmesh" icosa --level 3 -o cell.off -q || fail "rndmesh"
+}
+# Coarse steps and a looser force tolerance keep each run to seconds.
+compress() { "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 -q "$@"; }
+col() { awk -F, -v c="$2" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == c) k = i; h = 1; next } { print $k }' "$1"; }
+key() { sed -n "s/^# $2=//p" "$1"; }
+# bad_start PACKING MESH PATTERN: the run is refused before any work, exit 2.
+bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0.7 -o out.off; }
+
+case_help() {
+  "$shellpack" compress --help >help.txt || fail "--help"
+  for opt in --mesh --phi -o --csv --step --P0 -E --nu -t --model --bending --pressure-model --vertex-radius --ftol \
+    --fire-max-iterations --checkpoint --checkpoint-every --resume --timings --seed --threads; do
+    grep -q -- "$opt" help.txt || fail "--help lacks $opt"
+  done
+}
+
+case_compress_to_0_6() {
+  make_start
+  compress --phi 0.5,0.6 -o 'pack_{phi}.off' >compress.csv || fail "compress"
+  grep -q "^step,phi,dphi,box_side_d0,pressure_E,turgor_mean_P0,turgor_cv,Z,dZ,contacts,asphericity_d02,delta_eps,volume_error,energy_Ed3,energy_svk_Ed3,energy_volume_Ed3,energy_hertz-vertices_Ed3,residual,iterations,volume_updates,stop$" compress.csv ||
+    fail "header: $(grep -v '^#' compress.csv | head -1)"
+  ! grep -q seconds compress.csv || fail "seconds without --timings"
+  [ "$(col compress.csv stop | sort -u)" = converged ] || fail "not converged: $(col compress.csv stop)"
+  # Constant volume: every shell within 0.1 % of V0 after every step.
+  col compress.csv volume_error | awk '$1 > 1e-3 { exit 1 }' || fail "volume not held: $(col compress.csv volume_error)"
+  # phi only grows; the targets are rows of their own, landed on exactly.
+  col compress.csv phi | awk 'NR > 1 && $1 <= prev { exit 1 } { prev = $1 }' || fail "phi does not grow"
+  col compress.csv phi | grep -qx 0.5 || fail "no row at phi 0.5"
+  col compress.csv phi | grep -qx 0.6 || fail "no row at phi 0.6"
+  for phi in 0.5 0.6; do
+    f=pack_$phi.off
+    [ -s "$f" ] || fail "$f not written"
+    [ "$(key "$f" phi)" = "$phi" ] || fail "$f: phi=$(key "$f" phi)"
+    grep -q "^# box " "$f" && grep -q "^# periodic 1 1 1$" "$f" && grep -q "^# shells 16 162 162 " "$f" ||
+      fail "$f: packing lines"
+    for k in D0 E nu thickness vertex_radius P0 bending turgor volume0; do
+      [ -n "$(key "$f" $k)" ] || fail "$f lacks # $k="
+    done
+    [ "$(key "$f" turgor | wc -w)" -eq 16 ] || fail "$f: 16 turgors expected"
+    [ "$(key "$f" volume0 | wc -w)" -eq 16 ] || fail "$f: 16 volumes expected"
+    [ "$(key "$f" bending)" = none ] || fail "$f: bending"
+    grep -q "^# shellpack .*: shellpack compress jammed.xyz" "$f" || fail "$f: provenance"
+    # phi = sum V0 / L^3 from the file's own lines.
+    awk '/^# box/ { L = $3 * $4 * $5 } /^# volume0=/ { sub(/^# volume0=/, ""); for (i = 1; i <= NF; i++) v += $i }
+         /^# phi=/ { sub(/^# phi=/, ""); phi = $1 }
+         END { d = v / L - phi; if (d < -1e-12 || d > 1e-12) exit 1 }' "$f" || fail "$f: phi is not sum V0 / L^3"
+  done
+  # Z and the mean turgor rise with phi (the rows of the two targets).
+  z5=$(awk -F, '/^#/||NR==0{next} $2=="0.5"{print $8}' compress.csv)
+  z6=$(awk -F, '/^#/{next} $2=="0.6"{print $8}' compress.csv)
+  t5=$(awk -F, '/^#/{next} $2=="0.5"{print $6}' compress.csv)
+  t6=$(awk -F, '/^#/{next} $2=="0.6"{print $6}' compress.csv)
+  awk -v a="$z5" -v b="$z6" -v c="$t5" -v d="$t6" 'BEGIN { exit !(b > a && a >= 6 && d > c && c > 1) }' ||
+    fail "Z $z5 -> $z6, <Pi>/Pi0 $t5 -> $t6: expected both to rise (Z >= 6 once jammed, Pi > Pi0)"
+  # The packings go on to shellpack analyze, which reads the key lines and finds the same Z,
+  # turgor and shapes as the compression's own rows.
+  "$shellpack" analyze pack_0.5.off pack_0.6.off -q >analyze.csv || fail "analyze"
+  paste -d, <(col analyze.csv Z) <(col analyze.csv turgor_mean_P0) <(col analyze.csv delta_eps_mean) >a.txt
+  paste -d, <(echo "$z5"; echo "$z6") <(echo "$t5"; echo "$t6") \
+    <(awk -F, '/^#/{next} $2=="0.5"||$2=="0.6"{print $12}' compress.csv) >c.txt
+  awk -F, 'NR == FNR { z[FNR] = $1; t[FNR] = $2; e[FNR] = $3; next }
+           { if ($1 != z[FNR] || (t[FNR] - $2) ^ 2 > 1e-18 * $2 ^ 2 || (e[FNR] - $3) ^ 2 > 1e-18) exit 1 }' a.txt c.txt ||
+    fail "analyze disagrees with compress: $(cat a.txt) vs $(cat c.txt)"
+}
+
+case_same_bytes_on_1_and_2_threads() {
+  make_start
+  compress --phi 0.44 -o 'a_{phi}.off' --threads 1 >a.csv || fail "1 thread"
+  compress --phi 0.44 -o 'b_{phi}.off' --threads 2 >b.csv || fail "2 threads"
+  sed -i 's/b_{phi}/a_{phi}/' b.csv b_0.44.off
+  cmp -s a.csv b.csv || fail "CSV differs between 1 and 2 threads: $(diff a.csv b.csv | head -5)"
+  cmp -s a_0.44.off b_0.44.off || fail "packing differs between 1 and 2 threads"
+}
+
+case_resume_writes_the_same_bytes() {
+  make_start
+  mkdir -p whole parts
+  (cd whole && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
+    -o 'p_{phi}.off' --checkpoint run.chk >c.csv) || fail "uninterrupted run"
+  (cd parts && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
+    -o 'p_{phi}.off' --checkpoint run.chk --stop-after-steps 1 >first.csv) || fail "first part"
+  [ -s parts/run.chk ] || fail "no checkpoint after --stop-after-steps"
+  [ -e parts/p_0.44.off ] && [ ! -e parts/p_0.45.off ] || fail "the first part should stop between the targets"
+  (cd parts && "$shellpack" compress --resume run.chk --threads 2 -q >c.csv) || fail "resume"
+  cmp -s whole/c.csv parts/c.csv || fail "CSV differs after resuming: $(diff whole/c.csv parts/c.csv | head -5)"
+  for f in p_0.44.off p_0.45.off; do cmp -s whole/$f parts/$f || fail "$f differs after resuming"; done
+  cmp -s whole/run.chk parts/run.chk || fail "final checkpoints differ"
+}
+
+case_iteration_cap_exit_1_with_checkpoint() {
+  make_start
+  compress --phi 0.45 --checkpoint run.chk --stop-after-steps 1 >/dev/null || fail "first part"
+  "$shellpack" compress --resume run.chk --fire-max-iterations 3 -q >out.csv 2>err.txt
+  [ $? -eq 1 ] || fail "an iteration cap should exit 1: $(cat err.txt)"
+  grep -q "step 2 (phi .*): the relaxation stopped by max_iterations at residual .* after [0-9]* FIRE iterations; the checkpoint run.chk holds the last converged step" err.txt ||
+    fail "message: $(cat err.txt)"
+  [ ! -s out.csv ] || fail "a table after a failure"
+  # The checkpoint holds step 1: resumed with a cap that suffices, the run ends.
+  "$shellpack" compress --resume run.chk --fire-max-iterations 200000 -q >c.csv || fail "resume after the failure"
+  [ "$(col c.csv step | tail -1)" -eq 2 ] || fail "steps: $(col c.csv step)"
+}
+
+case_bad_packing_duplicate() {
+  make_start
+  awk 'NR == 3 { print; print; next } NR == 1 { print $1 + 1; next } { print }' jammed.xyz >dup.xyz
+  bad_start dup.xyz cell.off "dup.xyz:4: .*duplicate"
+}
+case_bad_packing_overlap() {
+  make_start
+  # Sphere 2 moved onto sphere 1 (a quarter diameter away).
+  awk 'NR == 3 { x = $2; y = $3; z = $4 } NR == 4 { $2 = x + 0.25; $3 = y; $4 = z } { print }' jammed.xyz >ov.xyz
+  bad_start ov.xyz cell.off "ov.xyz:4: sphere 2 overlaps sphere 1"
+}
+case_bad_packing_no_box() {
+  make_start
+  sed 's/Lattice="[^"]*" //' jammed.xyz >nobox.xyz
+  bad_start nobox.xyz cell.off "nobox.xyz:[0-9]*: .*Lattice"
+}
+case_bad_mesh_open() {
+  make_start
+  awk '!/^#/ && NR > 1 && !done && /^3 / { done = 1; next } { print }' cell.off | sed '0,/^162 320 0$/s//162 319 0/' >open.off
+  bad_start jammed.xyz open.off "open.off: a pressurised shell needs a closed manifold"
+}
+case_bad_mesh_inward() {
+  make_start
+  awk '/^3 / { print $1, $2, $4, $3; next } { print }' cell.off >inward.off
+  bad_start jammed.xyz inward.off "inward.off: the faces of shell 0 are oriented inward"
+}
+case_bad_targets() {
+  make_start
+  expect_error 2 "--phi: target 1.2 must lie in" compress --phi 0.5,1.2 -o 'out_{phi}.off'
+  expect_error 2 "--phi: target 0.2 is below the starting volume fraction" compress --phi 0.2,0.5 -o 'out_{phi}.off'
+  expect_error 2 "-o: must contain {phi}" compress --phi 0.5,0.6 -o out.off
+}
+case_bad_resume() {
+  make_start
+  echo "not a checkpoint" >other.chk
+  expect_error 2 "other.chk:1: not a shellpack compress checkpoint" "$shellpack" compress --resume other.chk
+  compress --phi 0.45 --checkpoint run.chk --stop-after-steps 1 >/dev/null || fail "first part"
+  "$shellpack" jam -N 16 --seed 4 -o jammed.xyz -q >/dev/null || fail "jam"
+  expect_error 2 "run.chk: the checkpoint belongs to another run" "$shellpack" compress --resume run.chk
+}
+case_progress_on_a_terminal() {
+  make_start
+  on_terminal term.txt "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 --phi 0.45 --csv c.csv ||
+    fail "run on a terminal"
+  grep -q "compressing" term.txt || fail "no progress bar: $(cat term.txt)"
+  grep -q "phi 0\.[0-9]*, step [0-9]*, residual" term.txt || fail "no phi/step/residual note: $(cat term.txt)"
+}
+
+run_cases "$@"
