@@ -225,12 +225,13 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                          row0.relax.iterations));
     rows.push_back(format_row(row0, std::chrono::duration<double>(clock::now() - step_start).count()));
   }
-  for (double t : o.targets)
+  const auto& targets = run.options().targets;  // phi (a --dphi list resolved by start/restore)
+  for (double t : targets)
     if (t < run.phi_jammed() && job.resume.empty())
       throw UsageError(fmt::format("--phi: target {} is below the starting volume fraction phi_J = {} of these shells",
                                    io::format_number(t), io::format_number(run.phi_jammed())));
   remember();
-  const double span = std::max(o.targets.back() - run.phi_jammed(), 1e-12);
+  const double span = std::max(targets.back() - run.phi_jammed(), 1e-12);
   bar.update(0);
 
   std::optional<io::AtomicOutput> csv_out;
@@ -276,7 +277,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
         found.size(), job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
   };
   const auto write_packing = [&](std::size_t target) {
-    const double phi = o.targets[target];
+    const double phi = targets[target];
     const auto& s = run.system();
     if (job.output_pattern.empty()) return;
     io::PackingInfo info;

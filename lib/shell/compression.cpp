@@ -4,6 +4,8 @@
 
 #include "core/errors.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 
@@ -74,6 +76,7 @@ CompressionRow Compression::start(const RelaxProgress& progress) {
   pressure->set_target_volumes(pressure->volumes(span_of(system_.x)));
   wrap_shells();
   phi_jammed_ = phi();
+  resolve_relative_targets();
   step_ = 0;
   next_target_ = 0;
   while (next_target_ < options_.targets.size() && options_.targets[next_target_] <= phi_jammed_) ++next_target_;
@@ -187,6 +190,18 @@ CompressionState Compression::state() const {
   return s;
 }
 
+void Compression::resolve_relative_targets() {
+  if (!options_.targets_relative) return;
+  if (relative_targets_.empty()) relative_targets_ = options_.targets;
+  options_.targets.clear();
+  for (double dphi : relative_targets_) {
+    const double phi = std::round((phi_jammed_ + dphi) * 1e6) / 1e6;
+    if (phi > 1)
+      throw UsageError(fmt::format("--dphi: {} above phi_J = {} is a volume fraction above 1", dphi, phi_jammed_));
+    if (options_.targets.empty() || phi > options_.targets.back()) options_.targets.push_back(phi);
+  }
+}
+
 void Compression::restore(const CompressionState& s) {
   if (s.x.size() != system_.x.size() || s.turgor.size() != system_.pressure()->turgors().size() ||
       s.volume0.size() != s.turgor.size())
@@ -194,6 +209,7 @@ void Compression::restore(const CompressionState& s) {
   step_ = s.step;
   next_target_ = s.next_target;
   phi_jammed_ = s.phi_jammed;
+  resolve_relative_targets();
   system_.x = s.x;
   system_.pressure()->set_turgors(s.turgor);
   system_.pressure()->set_target_volumes(s.volume0);

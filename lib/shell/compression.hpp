@@ -31,6 +31,9 @@ struct CompressionOptions {
   double turgor0 = 0.0025;     // Pi_0 [the unit of E] (the thesis: Pi_0 / E = 0.0025)
   double step = 0.004;         // largest box side change per step [D_0]
   std::vector<double> targets; // target phi, ascending
+  // The targets are dphi = phi - phi_J instead (phi_J known once the shells are inflated):
+  // they become phi_J + dphi, rounded to 6 decimals, at start() and restore().
+  bool targets_relative = false;
   RelaxParameters relax;       // force_scale is set from the mesh (E t a)
 };
 
@@ -91,6 +94,7 @@ class Compression {
  private:
   void set_box(const Eigen::Vector3d& box);
   void wrap_shells();
+  void resolve_relative_targets();  // dphi -> phi_J + dphi (once); throws cmp::UsageError above 1
   ShellPacking packing_;
   CompressionOptions options_;
   ShellSystem system_;
@@ -100,6 +104,7 @@ class Compression {
   long step_ = 0;
   std::size_t next_target_ = 0;
   double phi_jammed_ = 0;
+  std::vector<double> relative_targets_;  // the dphi as given, when options.targets_relative
 };
 
 }  // namespace cmp::shell

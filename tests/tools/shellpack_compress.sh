@@ -33,6 +33,19 @@ case_help() {
   done
 }
 
+case_dphi_targets() {
+  make_start
+  compress --dphi 0.001,0.05 -o 'pack_{phi}.off' >compress.csv || fail "compress --dphi"
+  phij=$(key compress.csv phi_J)
+  for d in 0.001 0.05; do
+    want=$(awk -v p="$phij" -v d="$d" 'BEGIN { printf "%.6f", p + d }')
+    col compress.csv phi | awk -v w="$want" '($1 - w)^2 < 1e-20 { f = 1 } END { exit !f }' ||
+      fail "no row at phi_J + $d = $want: $(col compress.csv phi | tr '\n' ' ')"
+    ls pack_*.off | grep -q . || fail "no packing written"
+  done
+  [ "$(ls pack_*.off | wc -l)" -eq 2 ] || fail "expected 2 packings: $(ls pack_*.off)"
+  expect_error 2 "--dphi" "$shellpack" compress jammed.xyz --mesh cell.off --phi 0.7 --dphi 0.1 -o out.off
+}
 case_compress_to_0_6() {
   make_start
   compress --phi 0.5,0.6 -o 'pack_{phi}.off' >compress.csv || fail "compress"

@@ -44,7 +44,7 @@ struct Options {
   bool bench_full = false, bench_analytic = false;
   // compress
   packrun::CompressJob compress;
-  std::string compress_phi;
+  std::string compress_phi, compress_dphi;
   double compress_p0 = 0.0025;
   bool no_penetration_check = false;
 };
@@ -80,8 +80,14 @@ void check_compress(cli::Tool& tool, Options& o, const std::vector<std::string>&
   auto& m = job.run.model;
   tool.check(!job.packing_path.empty(), "packing", "is required (a jammed sphere packing, or --resume)");
   tool.check(!job.mesh_path.empty(), "--mesh", "is required");
-  tool.check(!o.compress_phi.empty(), "--phi", "is required");
+  tool.check(!o.compress_phi.empty() || !o.compress_dphi.empty(), "--phi", "is required (or --dphi)");
+  tool.check(o.compress_phi.empty() || o.compress_dphi.empty(), "--dphi", "cannot be combined with --phi");
   if (!o.compress_phi.empty()) tool.collect("--phi", [&] { job.run.targets = packrun::parse_phi_targets(o.compress_phi); });
+  if (!o.compress_dphi.empty())
+    tool.collect("--dphi", [&] {
+      job.run.targets = packrun::parse_phi_targets(o.compress_dphi);
+      job.run.targets_relative = true;
+    });
   tool.check(job.run.targets.size() <= 1 || job.output_pattern.empty() ||
                  job.output_pattern.find("{phi}") != std::string::npos,
              "-o", "must contain {phi} when --phi names several targets, e.g. -o 'pack_{phi}.off'");
@@ -337,6 +343,8 @@ int main(int argc, char** argv) {
     cp->add_option("packing", cj.packing_path, "jammed sphere packing, extended XYZ (shellpack jam; first frame; periodic)");
     cp->add_option("--mesh", cj.mesh_path, "the cell: closed, outward-oriented triangle mesh (OFF), one copy per sphere");
     cp->add_option("--phi", o.compress_phi, "target volume fractions, START:STOP:STEP or a list a,b,c (each in (0, 1])");
+    cp->add_option("--dphi", o.compress_dphi,
+                   "targets as dphi = phi - phi_J above the inflated start instead (same forms; phi_J + dphi rounded to 6 decimals)");
     cp->add_option("-o,--output", cj.output_pattern, "write the packing OFF at each target here ({phi} = the target)");
     cp->add_option("--csv", cj.csv, "the table of box steps ('-': stdout)")->default_str("-");
     tool.add_double(*cp, "--step", cj.run.step, "largest change of the box side per step [D0]", cli::positive());
