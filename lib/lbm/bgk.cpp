@@ -9,7 +9,8 @@ namespace {
 
 struct BgkRelax {
   double omega;
-  [[gnu::always_inline]] void operator()(double (&g)[kQ]) const {
+  template <class V>
+  [[gnu::always_inline]] void operator()(V (&g)[kQ]) const {
 #pragma GCC unroll 19
     for (int q = 0; q < kQ; ++q) g[q] *= omega;
   }

@@ -142,8 +142,16 @@ void FlowSolver::Impl::step_once() {
     SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g};
     op->sweep(r);
   });
-  // Boundary passes: each touches only its own slots, in a fixed order (tiny next to the sweep).
-  for (const PressureNode& p : open) pressure_node(F, p, odd);
+  // Boundary passes: each node touches only its own slots. The pressure planes are cut into
+  // fixed chunks over the threads (same bits for any thread count): in the bench's porous 128^3
+  // box their ~11 000 nodes took 1.4 ms of a 15.5 ms step on one thread while the other
+  // waited. The few interpolated wall links run in a fixed order.
+  const long n_open = static_cast<long>(open.size());
+  const int open_chunks = n_open >= 256 ? 8 : 1;
+  for_each_chunk(open_chunks, [&](int c) {
+    const long end = chunk_begin(n_open, open_chunks, c + 1);
+    for (long i = chunk_begin(n_open, open_chunks, c); i < end; ++i) pressure_node(F, open[static_cast<std::size_t>(i)], odd);
+  });
   const int parity = odd ? 1 : 0;
   for (const WallLink& w : walls)
     store_population(F.data(), w.target,

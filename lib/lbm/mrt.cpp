@@ -61,16 +61,17 @@ struct MrtRelax {
   double even_coef[4];  // 2 (s_k - s_nu) / |M_k|^2: the 2 counts both members of a pair in M_k.g
   double odd_coef[3];   // 2 (s_m - s_q) / |M_k|^2
 
-  [[gnu::always_inline]] void operator()(double (&g)[kQ]) const {
-    double ev[kPairs + 1], od[kPairs + 1];
+  template <class V>
+  [[gnu::always_inline]] void operator()(V (&g)[kQ]) const {
+    V ev[kPairs + 1], od[kPairs + 1];
     ev[0] = g[0];
-    od[0] = 0;
+    od[0] = V{};
 #pragma GCC unroll 9
     for (int p = 1; p <= kPairs; ++p) {
       ev[p] = 0.5 * (g[p] + g[p + kPairs]);
       od[p] = 0.5 * (g[p] - g[p + kPairs]);
     }
-    double oute[kPairs + 1], outo[kPairs + 1];
+    V oute[kPairs + 1], outo[kPairs + 1];
 #pragma GCC unroll 10
     for (int q = 0; q <= kPairs; ++q) {
       oute[q] = s_nu * ev[q];
@@ -78,7 +79,7 @@ struct MrtRelax {
     }
 #pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
-      double m = 0.5 * kRows.even[k][0] * ev[0];
+      V m = 0.5 * kRows.even[k][0] * ev[0];
 #pragma GCC unroll 9
       for (int p = 1; p <= kPairs; ++p)
         if (kRows.even[k][p] != 0) m += kRows.even[k][p] * ev[p];
@@ -89,7 +90,7 @@ struct MrtRelax {
     }
 #pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
-      double m = 0;
+      V m{};
 #pragma GCC unroll 9
       for (int p = 1; p <= kPairs; ++p)
         if (kRows.odd[k][p] != 0) m += kRows.odd[k][p] * od[p];
