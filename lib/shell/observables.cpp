@@ -12,13 +12,14 @@ double face_area(const Eigen::VectorXd& x, const mesh::FaceMatrix& F, Eigen::Ind
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
+}  // namespace
+
 double contact_area(const Eigen::VectorXd& x, const mesh::FaceMatrix& F, const std::vector<char>& touching) {
   double sum = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
     if (touching[F(f, 0)] && touching[F(f, 1)] && touching[F(f, 2)]) sum += face_area(x, F, f);
   return sum;
 }
-}  // namespace
 
 double surface_area(const Eigen::VectorXd& x, const mesh::FaceMatrix& F) {
   double sum = 0;

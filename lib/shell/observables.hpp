@@ -31,6 +31,10 @@ Observables observe(const ShellSystem& s, const Eigen::VectorXd& x);
 // (3 N doubles), its eigenvalues in decreasing order.
 std::array<double, 3> gyration_eigenvalues(const Eigen::VectorXd& x);
 
+// The contact area rule of Fig. S2.7: the total area at x of the faces of F whose three
+// vertices all have touching[v] != 0 (touching holds one flag per vertex).
+double contact_area(const Eigen::VectorXd& x, const mesh::FaceMatrix& F, const std::vector<char>& touching);
+
 // Total area of the faces of F at x.
 double surface_area(const Eigen::VectorXd& x, const mesh::FaceMatrix& F);
 
