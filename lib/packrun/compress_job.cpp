@@ -336,7 +336,14 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
       return;
     }
     step_start = clock::now();
-    const auto row = run.advance(progress);
+    std::optional<shell::CompressionRow> attempt;
+    try {
+      attempt = run.advance(progress);
+    } catch (const ComputationError&) {
+      save();  // the last converged step
+      throw;
+    }
+    const auto& row = *attempt;
     ++steps_here;
     if (!row.relax.converged()) {
       save();

@@ -3,6 +3,7 @@
 #include "shell/shell_partition.hpp"
 
 #include "core/errors.hpp"
+#include "core/minimum_image.hpp"
 #include "neighbours/cell_grid.hpp"
 
 #include <algorithm>
@@ -29,34 +30,83 @@ VertexContacts::VertexContacts(const mesh::TriMesh& rest, const ContactParameter
   if (p.box) set_box(*p.box, p.box_periodic);
 }
 
-template <class Fn>
-void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
+void VertexContacts::build_pair_list(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
+  const double reach = (2.0 + kSkin) * radius_;
+  neighbours::Box box;
+  box.lower = scratch_.colwise().minCoeff().transpose().array() - reach;
+  box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + reach;
+  if (!box.lower.allFinite() || !box.lengths.allFinite())
+    throw ComputationError("hertz-vertices: a vertex position is not finite");
+  // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
+  // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
+  // one cell per vertex visits far fewer cells.
+  for (int a = 0; a < 3; ++a)
+    if (box_->periodic[a]) {
+      box.lower[a] = 0;
+      box.lengths[a] = box_->lengths[a];
+      box.periodic[a] = true;
+    }
+  const Eigen::Vector3i most = neighbours::CellGrid(box, reach).cells_per_axis();
+  const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(n))));
+  Eigen::Vector3i cells;
+  for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
+  neighbours::CellGrid grid(box, reach, cells);
+  grid.build(scratch_);
+  pairs_.clear();
+  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double) {
+    if (shell_of_[i] != shell_of_[j]) pairs_.push_back({i, j});
+  });
+  reference_.assign(x.begin(), x.end());
+  list_valid_ = true;
+}
+
+bool VertexContacts::pair_list_holds(std::span<const double> x) const {
+  if (!list_valid_ || reference_.size() != x.size()) return false;
+  const double limit2 = 0.25 * kSkin * kSkin * radius_ * radius_;  // half the skin, squared
+  for (std::size_t k = 0; k < x.size(); k += 3) {
+    const double dx = x[k] - reference_[k], dy = x[k + 1] - reference_[k + 1], dz = x[k + 2] - reference_[k + 2];
+    if (!(dx * dx + dy * dy + dz * dz < limit2)) return false;
+  }
+  return true;
+}
+
+template <class Fn>
+void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   if (n == 0) return;
   const double cutoff = 2.0 * radius_;
+  if (box_) {
+    // A Verlet list: every pair of different shells within 2 R_v (1 + skin/2) when built,
+    // kept while no vertex has moved half the skin (then no pair outside it can be in
+    // range). It is rebuilt after set_box(), so a run resumed at a box step builds the same
+    // lists as one never stopped.
+    if (!pair_list_holds(x)) build_pair_list(x);
+    const double* X = x.data();
+    double period[3], inverse[3];
+    for (int a = 0; a < 3; ++a) {
+      period[a] = box_->periodic[a] ? box_->lengths[a] : 0.0;
+      inverse[a] = box_->periodic[a] ? 1.0 / box_->lengths[a] : 0.0;
+    }
+    const double cutoff2 = cutoff * cutoff;
+    for (const auto& [i, j] : pairs_) {
+      Eigen::Vector3d d;
+      for (int a = 0; a < 3; ++a) d[a] = minimum_image(X[3 * i + a] - X[3 * j + a], period[a], inverse[a]);
+      const double r2 = d.squaredNorm();
+      if (r2 < cutoff2) f(i, j, d, std::sqrt(r2));
+    }
+    return;
+  }
+  scratch_.resize(n, 3);
+  std::copy(x.begin(), x.end(), scratch_.data());
   neighbours::Box box;
   box.lower = scratch_.colwise().minCoeff().transpose().array() - cutoff;
   box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
   if (!box.lower.allFinite() || !box.lengths.allFinite())
     throw ComputationError("hertz-vertices: a vertex position is not finite");
-  Eigen::Vector3i cells = Eigen::Vector3i::Zero();
-  if (box_) {
-    // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
-    // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
-    // one cell per vertex is enough and visits far fewer cells.
-    for (int a = 0; a < 3; ++a)
-      if (box_->periodic[a]) {
-        box.lower[a] = 0;
-        box.lengths[a] = box_->lengths[a];
-        box.periodic[a] = true;
-      }
-    const Eigen::Vector3i most = neighbours::CellGrid(box, cutoff).cells_per_axis();
-    const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(n))));
-    for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
-  }
-  neighbours::CellGrid grid(box, cutoff, cells);
+  neighbours::CellGrid grid(box, cutoff);
   grid.build(scratch_);
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d& d, double r2) {
     if (shell_of_[i] == shell_of_[j]) return;
@@ -90,11 +140,13 @@ void VertexContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool, 3>
   for (int a = 0; a < 3; ++a) {
     if (!(lengths[a] > 0) || !std::isfinite(lengths[a]))
       throw UsageError("hertz-vertices: box side " + std::to_string(lengths[a]) + " is not positive and finite");
-    if (periodic[a] && !(lengths[a] >= 4.0 * radius_))
+    if (periodic[a] && !(lengths[a] >= 2.0 * (2.0 + kSkin) * radius_))
       throw UsageError("hertz-vertices: the periodic box side " + std::to_string(lengths[a]) +
-                       " is shorter than 4 vertex radii (" + std::to_string(4.0 * radius_) + ")");
+                       " is shorter than " + std::to_string(2.0 * (2.0 + kSkin)) + " vertex radii (" +
+                       std::to_string(2.0 * (2.0 + kSkin) * radius_) + ")");
   }
   box_ = BoxSides{lengths, periodic};
+  list_valid_ = false;
 }
 
 std::vector<VertexContacts::Contact> VertexContacts::contacts(std::span<const double> x) const {

@@ -6,8 +6,10 @@
 //                   (lib/neighbours) rebuilt at every call over the vertices' bounding box, or,
 //                   once set_box() gave a box, over that box with the minimum image along its
 //                   periodic axes (a packing in a periodic box; a non-periodic axis keeps the
-//                   vertices' extent, for rigid walls at 0 and L). The pair loop runs on one
-//                   thread in a fixed cell order: the same bits for any thread count.
+//                   vertices' extent, for rigid walls at 0 and L); in a box the pairs come
+//                   from a Verlet list (skin R_v / 2) rebuilt when a vertex has moved a
+//                   quarter of R_v or the box changed. The pair loop runs on one thread in a
+//                   fixed order: the same bits for any thread count.
 //   WallContacts    every vertex sphere against rigid planes (walls that may move between
 //                   relaxations: set_walls).
 #include "shell/energy_term.hpp"
@@ -19,6 +21,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace cmp::shell {
@@ -41,9 +44,12 @@ class VertexContacts final : public EnergyTerm {
   // The box [0, L) the vertices live in, periodic along the flagged axes (minimum image), or
   // none (the default: open space). May change between relaxations (a box being
   // compressed). Throws cmp::UsageError for a side that is not positive and finite or a
-  // periodic side shorter than 4 R_v (two images of one vertex within the contact range).
+  // periodic side shorter than 5 R_v (twice the Verlet list's reach).
   void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic);
-  void clear_box() { box_.reset(); }
+  void clear_box() {
+    box_.reset();
+    list_valid_ = false;
+  }
   struct BoxSides {
     Eigen::Vector3d lengths;
     std::array<bool, 3> periodic;
@@ -63,12 +69,18 @@ class VertexContacts final : public EnergyTerm {
   double vertex_radius() const { return radius_; }
 
  private:
+  static constexpr double kSkin = 0.5;  // Verlet skin [R_v]
   template <class Fn>
   void for_each_contact(std::span<const double> x, Fn&& f) const;
+  void build_pair_list(std::span<const double> x) const;
+  bool pair_list_holds(std::span<const double> x) const;
   std::vector<int> shell_of_;
   double radius_, estar_;
   std::optional<BoxSides> box_;
   mutable mesh::VertexMatrix scratch_;
+  mutable std::vector<std::pair<int, int>> pairs_;
+  mutable std::vector<double> reference_;
+  mutable bool list_valid_ = false;
 };
 
 class WallContacts final : public EnergyTerm {
