@@ -325,6 +325,9 @@ void Compression::restore(const CompressionState& s) {
   system_.pressure()->set_turgors(s.turgor);
   system_.pressure()->set_target_volumes(s.volume0);
   set_box(s.box);
+  // A resume may name other targets: never one the state has already passed.
+  while (next_target_ < options_.targets.size() && options_.targets[next_target_] <= phi() * (1.0 + 1e-9))
+    ++next_target_;
 }
 
 }  // namespace cmp::shell

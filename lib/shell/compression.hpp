@@ -87,7 +87,8 @@ class Compression {
   // phi_start, cmp::UsageError when phi_start is not below what the inflated packing allows);
   // the row of step 0.
   CompressionRow start(const RelaxProgress& progress = {});
-  // Continues from a saved state (of the same packing and options).
+  // Continues from a saved state (of the same packing and options; targets at or below the
+  // state's phi are skipped, so a resume may change --phi).
   void restore(const CompressionState& state);
   CompressionState state() const;
 

@@ -73,6 +73,16 @@ case_walls_resume_and_threads_same_bytes() {
   cmp -s whole/run.chk parts/run.chk || fail "final checkpoints differ"
 }
 
+# A resume that names a target the checkpoint has passed skips it (not a box that grows).
+case_walls_resume_with_other_targets() {
+  make_start
+  walls --phi 0.3 --checkpoint run.chk --stop-after-steps 9 >first.csv || fail "first part"
+  p9=$(col first.csv phi | tail -1)
+  "$shellpack" compress --resume run.chk --phi 0.2,0.3 -o 'q_{phi}.off' -q >c.csv || fail "resume with --phi 0.2,0.3"
+  [ ! -e q_0.2.off ] && [ -s q_0.3.off ] || fail "packings: $(ls q_*)"
+  col c.csv phi | awk 'NR > 1 && $1 <= prev { exit 1 } { prev = $1 }' || fail "phi does not grow after $p9"
+}
+
 case_walls_bad_start() {
   make_start
   expect_error 2 "--phi-start: must lie in (0, 1)" walls --phi 0.5 --phi-start 0
