@@ -63,7 +63,7 @@ case_bad_input() {
   expect_error 2 "--pmin: must be positive, got '-1'" "$shellpack" jam -N 16 --pmin -1 -o out.xyz
   expect_error 2 "--fire-f-dec: must lie in (0, 1), got '2'" "$shellpack" jam -N 16 --fire-f-dec 2 -o out.xyz
   expect_error 2 "--spheres: '20x' is not an integer" "$shellpack" jam -N 20x -o out.xyz
-  expect_error 2 "unknown subcommand 'compress'" "$shellpack" compress -o out.xyz
+  expect_error 2 "unknown subcommand 'squash'" "$shellpack" squash -o out.xyz
   expect_error 2 "missing.xyz" "$shellpack" structure missing.xyz -o out.csv
   xyz_packing dup.xyz "4 0 0 0 4 0 0 0 4" "0 0 0 0.5" "1 1 1 0.5" "1 1 1 0.5"
   expect_error 2 "dup.xyz:5: .*duplicates" "$shellpack" structure dup.xyz -o out.csv
