@@ -101,6 +101,16 @@ AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
   const auto name = target.filename().string();
   if (name.empty() || name == "." || name == "..")
     throw InputError(path_, 0, "cannot write: not a file name");
+  // A device, pipe or socket (/dev/null, /dev/stdout, a FIFO, bash's >(...) as /dev/fd/63) is
+  // written in place: renaming a finished temporary onto it would replace /dev/null by a
+  // regular file (as root) or fail, and a stream has no half-written state to hide anyway.
+  struct stat existing {};
+  if (::stat(path_.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) {
+    if (S_ISDIR(existing.st_mode)) throw InputError(path_, 0, "cannot write: " + errno_text(EISDIR));
+    if (::access(path_.c_str(), W_OK) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
+    in_place_ = true;
+    return;
+  }
   const auto dir = target.parent_path().string();
   // The temporary comes at the first write; say now if it could not be made.
   const char* folder = dir.empty() ? "." : dir.c_str();
@@ -111,6 +121,12 @@ AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
 }
 
 void AtomicOutput::create_temporary() {
+  if (in_place_) {
+    auto file = std::make_unique<std::ofstream>(path_, std::ios::binary);
+    if (!*file) throw InputError(path_, 0, "cannot write: " + errno_text(errno ? errno : EIO));
+    file_ = std::move(file);
+    return;
+  }
   const std::filesystem::path target(path_);
   // Hidden, in the same folder: rename() is atomic only within one file system.
   std::string templ_text = (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
@@ -169,6 +185,10 @@ void AtomicOutput::commit() {
   if (!written || file.fail()) {
     discard();
     throw InputError(path_, 0, "write error: " + errno_text(close_err ? close_err : EIO));
+  }
+  if (in_place_) {
+    committed_ = true;
+    return;
   }
   // No fsync: the promise is about interrupted runs, not power cuts, and fsync per file would
   // slow sweeps that write thousands of small files.

@@ -14,7 +14,9 @@ namespace cmp::io {
 
 class AtomicOutput {
  public:
-  // Checks the target: "-" means stdout; otherwise the folder must exist and be writable.
+  // Checks the target: "-" means stdout; a target that exists and is not a regular file (a
+  // device such as /dev/null, a FIFO, bash's >(...)) is written in place, without a
+  // temporary; otherwise the folder must exist and be writable.
   // The temporary "<dir>/.<name>.tmp.XXXXXX" is created at the first stream() call (so a tool
   // can open its outputs before a long computation without leaving files while it computes).
   // Throws cmp::InputError(path, 0, ...) when the folder does not exist or is not writable.
@@ -39,6 +41,7 @@ class AtomicOutput {
   std::unique_ptr<std::ostream> file_;
   int registration_ = -1;
   bool committed_ = false;
+  bool in_place_ = false;  // a device or pipe: no temporary, no rename
 };
 
 // A path to remove if the process is interrupted, registered for as long as this object

@@ -19,6 +19,7 @@ void JammingParameters::validate() const {
   };
   require(initial_volume_fraction > 0 && initial_volume_fraction < 0.5, "initial volume fraction must lie in (0, 0.5)");
   require(initial_step > 0 && initial_step < 0.5, "initial radius step eps_r must lie in (0, 0.5)");
+  require(polydispersity >= 0 && polydispersity <= kMaxPolydispersity, "polydispersity must lie in [0, 0.25]");
   require(min_pressure > 0 && std::isfinite(min_pressure), "P_min must be positive");
   require(max_tries > 0, "max tries must be positive");
   require(max_size_changes > 0, "max size changes must be positive");
@@ -96,7 +97,8 @@ namespace {
 struct Try {
   TryOutcome outcome = TryOutcome::NoPressureWindow;
   Eigen::VectorXd x;
-  double radius = 0;
+  double radius = 0;  // the mean radius
+  Eigen::VectorXd sizes;  // radius / mean radius of each sphere
   HertzState state;
   double max_force = 0;
   long fire_iterations = 0, size_changes = 0;
@@ -108,8 +110,15 @@ Try jam_once(int n, double side, Random& random, const JammingParameters& p, Jam
   Try t;
   t.x.resize(3L * n);
   for (Eigen::Index k = 0; k < t.x.size(); ++k) t.x[k] = side * random.uniform();
-  t.radius = std::cbrt(3 * p.initial_volume_fraction * side * side * side / (4 * std::numbers::pi * n));
-  HertzSpheres system(Eigen::Vector3d::Constant(side), Eigen::VectorXd::Constant(n, t.radius), p.material);
+  t.sizes = Eigen::VectorXd::Ones(n);
+  if (p.polydispersity > 0) {  // drawn after the centres: a monodisperse run keeps its stream
+    const double half_width = std::sqrt(3.0) * p.polydispersity;
+    for (int i = 0; i < n; ++i) t.sizes[i] = random.uniform(1 - half_width, 1 + half_width);
+    t.sizes /= t.sizes.mean();
+  }
+  const double size_cubes = t.sizes.array().cube().sum();  // n when monodisperse
+  t.radius = std::cbrt(3 * p.initial_volume_fraction * side * side * side / (4 * std::numbers::pi * size_cubes));
+  HertzSpheres system(Eigen::Vector3d::Constant(side), t.radius * t.sizes, p.material);
   const auto forces = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) { system.forces(x, f); };
   const double volume = side * side * side;
   double step = p.initial_step;
@@ -134,7 +143,7 @@ Try jam_once(int n, double side, Random& random, const JammingParameters& p, Jam
       t.state = system.evaluate(t.x);
     }
     const double P = t.state.pressure;
-    const double phi = n * 4.0 / 3.0 * std::numbers::pi * std::pow(t.radius, 3) / volume;
+    const double phi = size_cubes * 4.0 / 3.0 * std::numbers::pi * std::pow(t.radius, 3) / volume;
     info.size_changes = t.size_changes, info.volume_fraction = phi, info.pressure = P;
     if (progress && !progress(info)) throw ComputationError("interrupted");
     if (fire.converged() && in_window(P)) break;
@@ -142,7 +151,7 @@ Try jam_once(int n, double side, Random& random, const JammingParameters& p, Jam
     const bool inflate = P <= p.min_pressure;
     if (inflate != inflating) step /= 2, inflating = inflate;  // halve eps_r at each reversal
     t.radius *= inflate ? 1 + step : 1 - step;
-    system.set_radii(Eigen::VectorXd::Constant(n, t.radius));
+    system.set_radii(t.radius * t.sizes);
     ++t.size_changes;
   }
   const auto rattler = find_rattlers(n, t.state.contacts);
@@ -186,7 +195,7 @@ JammingResult jam_spheres(int n, std::uint64_t seed, const JammingParameters& p,
     }
     result.packing.box = Eigen::Vector3d::Constant(side);
     result.packing.positions = Eigen::Map<const mesh::VertexMatrix>(t.x.data(), n, 3);
-    result.packing.radii = Eigen::VectorXd::Constant(n, t.radius);
+    result.packing.radii = t.radius * t.sizes;
     result.pressure = t.state.pressure;
     result.energy = t.state.energy;
     result.max_force = t.max_force;

@@ -1,5 +1,5 @@
 #pragma once
-// Jammed packings of monodisperse Hertzian spheres by the thesis's protocol (Section 5.5.1;
+// Jammed packings of Hertzian spheres by the thesis's protocol (Section 5.5.1;
 // where the text is silent, docs/thesis-departures.md says what was chosen): random centres in a periodic cube at volume fraction 0.01, then
 // radii scaled by (1 + eps_r) or (1 - eps_r), each change followed by FIRE, inflating while
 // P < P_min and deflating while P > 2 P_min, with eps_r halved at every reversal, until
@@ -21,6 +21,11 @@ namespace cmp::spheres {
 struct JammingParameters {
   double initial_volume_fraction = 0.01;  // psi_0
   double initial_step = 0.01;             // eps_r
+  // Relative standard deviation of the radii (0: monodisperse, the thesis's packings). The
+  // relative sizes are drawn uniformly from [1 - sqrt(3) p, 1 + sqrt(3) p] (whose standard
+  // deviation is p) after the centres of each try and rescaled to mean 1; every size change
+  // scales all radii by the same factor, so the size ratios are those drawn. At most 0.25.
+  double polydispersity = 0;
   double min_pressure = 1e-8;             // P_min, in units of E
   HertzMaterial material;                 // E = 1, nu = 0.5
   minimise::FireParameters fire;          // the thesis's FIRE; tolerance below
@@ -50,7 +55,7 @@ enum class TryOutcome { Accepted, Rattlers, NotIsostatic, NoPressureWindow, Fire
 std::string try_outcome_name(TryOutcome outcome);
 
 struct JammingResult {
-  SpherePacking packing;    // centres wrapped into [0, L)^3, equal radii
+  SpherePacking packing;    // centres wrapped into [0, L)^3; equal radii unless polydisperse
   double pressure = 0;      // in units of E
   double energy = 0;
   double max_force = 0;     // max |f_i| at the end
@@ -70,6 +75,9 @@ struct JammingResult {
 // The side of the cube: chosen so that the diameter is about 1 at jamming (L^3 = N pi / (6 *
 // 0.64)); the result does not depend on it (Hertz pressure is scale-free in units of E).
 double jamming_box_side(int n);
+
+// The largest polydispersity accepted: the smallest sphere is then about 0.57 of the mean.
+inline constexpr double kMaxPolydispersity = 0.25;
 
 // Smallest N accepted: below it a sphere at jamming is wider than half the box and would touch
 // two images of another, and the minimum image convention (and the thesis's model) breaks.

@@ -41,6 +41,7 @@ void write_jamming_table(std::ostream& out, const std::vector<JammingResult>& re
   csv.meta("P_min", format_number(p.min_pressure));
   csv.meta("eps_r", format_number(p.initial_step));
   csv.meta("phi_0", format_number(p.initial_volume_fraction));
+  csv.meta("polydispersity", format_number(p.polydispersity));
   csv.meta("force_tolerance", format_number(p.fire.force_tolerance));
   csv.meta("units", "pressure in E, energy in E d^3 (d: jammed diameter); max_force in the packing file's units "
                     "(E times length^2, lengths such that d is about 1), the units of --ftol");

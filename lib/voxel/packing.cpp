@@ -49,6 +49,8 @@ Packing read_shells(io::Input& input) {
       p.d0_source = "file";
     }
   }
+  p.comments = std::move(off.comments);
+  p.comment_lines = std::move(off.comment_lines);
   if (p.d0_source.empty()) {
     const auto vols = shell_volumes(p.V, p.F, p.shell_offsets);
     double mean = 0;

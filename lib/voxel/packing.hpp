@@ -36,6 +36,9 @@ struct Packing {
   // their volume, as in the thesis), "mean_diameter" (mean unscaled sphere diameter).
   double d0 = 1;
   std::string d0_source;
+  // Shells: the OFF's other comment lines (io::OffFile::comments) and their line numbers.
+  std::vector<std::string> comments;
+  std::vector<long> comment_lines;
 
   int particles() const { return kind == Kind::Shells ? static_cast<int>(shell_offsets.size()) - 1 : static_cast<int>(centres.rows()); }
 };

@@ -10,6 +10,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <fcntl.h>
 #include <unistd.h>
 
 using namespace cmp;
@@ -189,4 +190,30 @@ TEST_CASE("The temporary registry removes what an interrupted run would leave", 
   done.commit();
   cmp::io::remove_registered_temporaries();
   CHECK(std::filesystem::exists(dir.file("done.csv")));
+}
+
+TEST_CASE("AtomicOutput writes a FIFO (or a device such as /dev/null) in place, never replacing it", "[atomic_output]") {
+  TempDir dir;
+  const auto fifo = dir.file("pipe");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  // Held open for reading and writing (Linux), so the writer's open does not block and the
+  // test cannot hang when the output goes elsewhere.
+  const int fd = ::open(fifo.c_str(), O_RDWR | O_NONBLOCK);
+  REQUIRE(fd >= 0);
+  {
+    AtomicOutput out(fifo);
+    out.stream() << "through the pipe\n";
+    out.commit();
+  }
+  char buffer[64] = {};
+  const auto n = ::read(fd, buffer, sizeof buffer);
+  ::close(fd);
+  const std::string received(buffer, n > 0 ? static_cast<std::size_t>(n) : 0);
+  CHECK(received == "through the pipe\n");
+  struct stat st {};
+  REQUIRE(::stat(fifo.c_str(), &st) == 0);
+  CHECK(S_ISFIFO(st.st_mode));  // a rename would have put a regular file here
+  CHECK(dir.entries() == std::vector<std::string>{"pipe"});  // no temporary left beside it
+  // A folder is still refused.
+  CHECK_THROWS_AS(AtomicOutput(dir.path().string()), InputError);
 }

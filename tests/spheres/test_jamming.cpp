@@ -117,3 +117,33 @@ TEST_CASE("Jamming warns when its acceptance rules make a packing rare at this N
   loose.require_isostatic = false;
   CHECK(acceptance_warning(1024, loose).empty());
 }
+
+TEST_CASE("Polydisperse jamming: radii spread as asked, the packing is still jammed, isostatic and rattler-free") {
+  JammingParameters p;
+  p.polydispersity = 0.15;
+  const int n = 20;
+  const auto r = jam_spheres(n, 4, p);
+  const Eigen::VectorXd& radii = r.packing.radii;
+  const double mean_radius = radii.mean();
+  const double sd = std::sqrt((radii.array() - mean_radius).square().sum() / n);
+  INFO("relative sd " << sd / mean_radius);
+  CHECK(sd / mean_radius > 0.08);  // 20 uniform draws of sd 0.15
+  CHECK(sd / mean_radius < 0.22);
+  CHECK(radii.minCoeff() >= mean_radius * (1 - std::sqrt(3.0) * 0.15) * (1 - 1e-12));
+  CHECK(radii.maxCoeff() <= mean_radius * (1 + std::sqrt(3.0) * 0.15) * (1 + 1e-12));
+  CHECK(r.contacts == 3 * n - 2);
+  CHECK(r.rattlers == 0);
+  CHECK(r.pressure > p.min_pressure);
+  CHECK(r.pressure < 2 * p.min_pressure);
+  const auto s = contact_statistics(frame_to_packing(packing_to_frame(r.packing)));
+  CHECK(s.contacts == 3 * n - 2);
+  // Monodisperse by default, and polydispersity 0 is the default packing, bit for bit.
+  const auto mono = jam_spheres(n, 4, JammingParameters{});
+  CHECK(mono.packing.radii.maxCoeff() == mono.packing.radii.minCoeff());
+  JammingParameters zero;
+  zero.polydispersity = 0;
+  CHECK(jam_spheres(n, 4, zero).packing.positions == mono.packing.positions);
+  JammingParameters bad;
+  bad.polydispersity = 0.3;
+  CHECK_THROWS_AS(jam_spheres(n, 4, bad), cmp::UsageError);
+}

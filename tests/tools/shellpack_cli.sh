@@ -45,6 +45,16 @@ case_jam_reproducible_any_threads() {
   [ "$(grep -vc '^#' one.csv)" = 5 ] || fail "expected a header and 4 rows"
   ! cmp -s one_1.xyz one_2.xyz || fail "two seeds gave one packing"
 }
+case_jam_polydisperse() {
+  "$shellpack" jam -N 20 --seed 5 --polydispersity 0.2 -o poly.xyz >poly.csv 2>err.txt || fail "jam: $(cat err.txt)"
+  grep -q '^# polydispersity=0.2' poly.csv || fail "no polydispersity line"
+  [ "$(column contacts poly.csv)" = 58 ] || fail "contacts $(column contacts poly.csv), expected 3N-2 = 58"
+  # radii differ, their relative spread is of the order asked
+  awk 'NR > 2 { r[NR] = $5; s += $5; n++ } END { m = s / n; for (i in r) v += (r[i] - m)^2; cv = sqrt(v / n) / m
+       exit !(cv > 0.1 && cv < 0.3) }' poly.xyz || fail "radius spread"
+  expect_error 2 "polydispersity" "$shellpack" jam -N 20 --polydispersity 0.4 -o no.xyz
+  [ ! -e no.xyz ] || fail "output written on bad option"
+}
 case_structure() {
   "$shellpack" jam -N 20 --seeds 1:2 -o 'p_{seed}.xyz' -q >/dev/null || fail "jam"
   "$shellpack" structure p_1.xyz p_2.xyz --forces forces.csv --summary summary.csv >rdf.csv 2>err.txt || fail "structure: $(cat err.txt)"

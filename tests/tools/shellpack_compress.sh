@@ -71,6 +71,15 @@ case_compress_to_0_6() {
   t6=$(awk -F, '/^#/{next} $2=="0.6"{print $6}' compress.csv)
   awk -v a="$z5" -v b="$z6" -v c="$t5" -v d="$t6" 'BEGIN { exit !(b > a && a >= 6 && d > c && c > 1) }' ||
     fail "Z $z5 -> $z6, <Pi>/Pi0 $t5 -> $t6: expected both to rise (Z >= 6 once jammed, Pi > Pi0)"
+  # The packings go on to shellpack analyze, which reads the key lines and finds the same Z,
+  # turgor and shapes as the compression's own rows.
+  "$shellpack" analyze pack_0.5.off pack_0.6.off -q >analyze.csv || fail "analyze"
+  paste -d, <(col analyze.csv Z) <(col analyze.csv turgor_mean_P0) <(col analyze.csv delta_eps_mean) >a.txt
+  paste -d, <(echo "$z5"; echo "$z6") <(echo "$t5"; echo "$t6") \
+    <(awk -F, '/^#/{next} $2=="0.5"||$2=="0.6"{print $12}' compress.csv) >c.txt
+  awk -F, 'NR == FNR { z[FNR] = $1; t[FNR] = $2; e[FNR] = $3; next }
+           { if ($1 != z[FNR] || (t[FNR] - $2) ^ 2 > 1e-18 * $2 ^ 2 || (e[FNR] - $3) ^ 2 > 1e-18) exit 1 }' a.txt c.txt ||
+    fail "analyze disagrees with compress: $(cat a.txt) vs $(cat c.txt)"
 }
 
 case_same_bytes_on_1_and_2_threads() {

@@ -5,6 +5,7 @@
 //   shellpack structure jammed.xyz > rdf.csv                      g(r), Z, rattlers, contact forces
 //   shellpack shell --mesh cell.off --model svk -E 25e6 --nu 0.333 -t 0.1 --pressure 2.5e5 -o inflated.off > inflate.csv
 //   shellpack shell ... --walls 2.0 --squeeze 0.3 -o squeezed.off > plates.csv      one shell between two plates
+//   shellpack analyze pack_*.off --rdf rdf.csv > structure.csv   Z, shapes, turgor, contact forces of shell packings
 //   shellpack bench-mechanics sphere > sphere.csv                 the Appendix B benchmarks (Figs B.4-B.10)
 //   shellpack compress jammed.xyz --mesh cell.off --phi 0.70:0.95:0.05 -o 'pack_{phi}.off' > compress.csv
 //   shellpack compress --resume compress.chk > compress.csv         continue an interrupted compression
@@ -12,6 +13,7 @@
 #include "cli/tool.hpp"
 #include "elasticity/benchmark_curves.hpp"
 #include "io/atomic_output.hpp"
+#include "packrun/analyze_batch.hpp"
 #include "packrun/compress_job.hpp"
 #include "packrun/jam_batch.hpp"
 #include "packrun/shell_job.hpp"
@@ -36,6 +38,7 @@ struct Options {
   bool keep_rattlers = false, allow_hyperstatic = false;
   packrun::StructureBatch structure;
   packrun::ShellJob shell;
+  packrun::AnalyzeBatch analyze;
   double vertex_radius = 0, wall_gap = 0;
   bool list_models = false;
   // bench-mechanics
@@ -167,6 +170,26 @@ void check_shell(cli::Tool& tool, Options& o) {
              "the mesh already goes to stdout (-o -): write the CSV to a file");
 }
 
+void check_analyze(cli::Tool& tool, const packrun::AnalyzeBatch& b) {
+  tool.check(b.options.r_max > b.options.bin_width, "--rmax", "must exceed --bin");
+  const int to_stdout =
+      (b.output == "-") + (b.rdf_output == "-") + (b.shells_output == "-") + (b.contacts_output == "-");
+  tool.check(to_stdout <= 1, "", "-o, --rdf, --shells and --contacts: at most one of them may be '-' (stdout)");
+}
+
+// The analyze options that override the file's values only when given.
+struct AnalyzeOverrides {
+  double E = 1, nu = 0.5, rv = 1, d0 = 1, p0 = 1;
+  CLI::Option *E_opt, *nu_opt, *rv_opt, *d0_opt, *p0_opt;
+  void apply(packrun::AnalyzeOptions& o) const {
+    if (E_opt->count()) o.youngs_modulus = E;
+    if (nu_opt->count()) o.poisson_ratio = nu;
+    if (rv_opt->count()) o.vertex_radius = rv;
+    if (d0_opt->count()) o.d0 = d0;
+    if (p0_opt->count()) o.p0 = p0;
+  }
+};
+
 void run_bench_mechanics(const Options& o, const std::string& provenance) {
   io::AtomicOutput out(o.bench_output);
   if (o.bench_analytic)
@@ -201,6 +224,9 @@ int main(int argc, char** argv) {
     jam->add_flag("--timings", o.jam.timings, "add the wall time of each packing (`seconds`) to the CSV");
     tool.add_double(*jam, "--phi0", p.initial_volume_fraction, "volume fraction of the random start, psi_0", cli::open(0, 0.5));
     tool.add_double(*jam, "--eps-r", p.initial_step, "first relative radius step eps_r, halved at each reversal", cli::open(0, 0.5));
+    tool.add_double(*jam, "--polydispersity", p.polydispersity,
+                    "relative standard deviation of the radii (uniform sizes; 0: monodisperse as in the thesis)",
+                    cli::closed(0, spheres::kMaxPolydispersity));
     tool.add_double(*jam, "--pmin", p.min_pressure, "P_min [E]: stop when P_min < P < 2 P_min", cli::positive());
     tool.add_double(*jam, "--youngs-modulus", p.material.youngs_modulus, "Young's modulus E of the spheres [pressure units]",
                     cli::positive());
@@ -273,6 +299,33 @@ int main(int argc, char** argv) {
     sh->add_option("--csv", o.shell.csv, "the table of load steps ('-': stdout)")->default_str("-");
     tool.add_common(*sh, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
+    auto& an = o.analyze;
+    AnalyzeOverrides ov;
+    auto* analyze = app->add_subcommand("analyze", "the Chapter 4 observables of packings of shells (packing OFFs): Z, g(r), "
+                                                   "shapes, turgor, contact forces, mu_eff, walls, Voronoi facets");
+    analyze->add_option("packings", an.inputs, "packing OFFs ('-': stdin); one summary row each")->required();
+    analyze->add_option("-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
+    analyze->add_option("--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
+    analyze->add_option("--shells", an.shells_output, "write one row per shell to this CSV");
+    analyze->add_option("--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
+    ov.E_opt = tool.add_double(*analyze, "-E,--youngs-modulus", ov.E, "Young's modulus E [P] (default: the file's E=)",
+                               cli::positive())->default_str("");
+    ov.nu_opt = tool.add_double(*analyze, "--nu,--poisson-ratio", ov.nu, "Poisson's ratio nu (default: the file's nu=, else 0.5)",
+                                cli::left_open(-1, 0.5));
+    ov.rv_opt = tool.add_double(*analyze, "--vertex-radius", ov.rv,
+                                "Hertz vertex radius R_v [u] (default: the file's vertex_radius=, else thickness=)",
+                                cli::positive())
+                    ->default_str("");
+    ov.d0_opt = tool.add_double(*analyze, "--d0", ov.d0, "D0, the unit of g(r) [u] (default: the file's D0=, else from the volumes)",
+                                cli::positive())->default_str("");
+    ov.p0_opt = tool.add_double(*analyze, "--p0", ov.p0, "initial turgor P0 [P] (default: the file's P0=)", cli::positive())
+                    ->default_str("");
+    tool.add_double(*analyze, "--wall-modulus", an.options.wall_modulus, "Young's modulus of the walls [P] (default: rigid)",
+                    cli::positive());
+    tool.add_double(*analyze, "--bin", an.options.bin_width, "g(r) bin width [D0]", cli::positive());
+    tool.add_double(*analyze, "--rmax", an.options.r_max, "g(r) range [D0]", cli::positive());
+    tool.add_common(*analyze, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+
     auto* bench = app->add_subcommand("bench-mechanics", "an Appendix B benchmark as CSV, computed beside the analytic curve");
     bench->add_option("case", o.bench_case, "sphere, poisson, plate-point, plate-uniform, plate-large, plates-contact or buckling")
         ->required();
@@ -341,6 +394,7 @@ int main(int argc, char** argv) {
     if (jam->parsed()) check_jam(tool, o);
     if (structure->parsed()) check_structure(tool, o.structure);
     if (sh->parsed()) check_shell(tool, o);
+    if (analyze->parsed()) check_analyze(tool, an);
     if (bench->parsed()) tool.collect("case", [&] { shell::check_mechanics_benchmark(o.bench_case); });
     tool.finish_checks();
     cli::apply_threads(o.common);
@@ -348,11 +402,13 @@ int main(int argc, char** argv) {
       shell::write_model_list(std::cout);
       return 0;
     }
-    o.jam.quiet = o.structure.quiet = o.shell.quiet = o.common.quiet;
+    o.jam.quiet = o.structure.quiet = o.shell.quiet = an.quiet = o.common.quiet;
+    ov.apply(an.options);
     const std::string provenance = cli::provenance("shellpack", argc, argv);
     if (jam->parsed()) packrun::run_jam_batch(o.jam, provenance);
     if (structure->parsed()) packrun::run_structure_batch(o.structure, provenance);
     if (sh->parsed()) packrun::run_shell_job(o.shell, provenance);
+    if (analyze->parsed()) packrun::run_analyze_batch(an, provenance);
     if (bench->parsed()) run_bench_mechanics(o, provenance);
     if (cp->parsed()) {
       // The run as the checkpoint records it (without --resume, --threads, ...): an interrupted
