@@ -57,6 +57,10 @@ case_walls_sweep_to_load() {
   Pi=$(row w.csv 0.4 turgor_mean_P0)
   awk -v p="$P" -v t="$T" -v r="$R" -v pi="$Pi" 'BEGIN { m = pi * 0.0025; exit !(p > 0 && t > 0.02 && r > 0.5 * m && r < 2 * m) }' ||
     fail "at phi 0.4: P $P, Theta $T, P/Theta $R, <Pi>/Pi0 $Pi"
+  # shellpack analyze finds the same wall load in the packing OFF (one definition, lib/shell/wall_load).
+  "$shellpack" analyze w_0.4.off -q >a.csv 2>/dev/null || fail "analyze w_0.4.off"
+  [ "$(col a.csv wall_pressure_P)" = "$P" ] && [ "$(col a.csv coverage)" = "$T" ] ||
+    fail "analyze: P $(col a.csv wall_pressure_P), Theta $(col a.csv coverage); compress: $P, $T"
 }
 
 # One run on 1 thread against a run stopped after 9 box steps and resumed on 2 threads.
