@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -132,6 +133,10 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   fp.add(cell.F.data(), sizeof(int) * static_cast<std::size_t>(cell.F.size()));
   fp.add(job.seed);
   fp.add(m.contact.vertex_radius);
+  if (o.walls) {
+    fp.add(o.phi_start);
+    fp.add(m.contact.wall_modulus);
+  }
 
   std::string provenance = provenance_now;
   std::vector<std::string> rows;
@@ -147,6 +152,10 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     return true;
   };
   const auto term_names = run.term_names();
+  // The walls: "rigid" or their Young's modulus E_w [E].
+  const std::string wall_name = std::isinf(m.contact.wall_modulus)
+                                    ? std::string("rigid")
+                                    : io::format_number(m.contact.wall_modulus / m.material.youngs_modulus);
   const auto format_row = [&](const shell::CompressionRow& r, double seconds) {
     const auto f = [](double v) { return io::format_number(v); };
     std::string s = std::to_string(r.step);
@@ -155,6 +164,9 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     s += "," + std::to_string(r.contacts);
     for (double v : {r.asphericity, r.delta_eps, r.volume_error, r.energy}) s += "," + f(v);
     for (double e : r.term_energies) s += "," + f(e);
+    if (o.walls)
+      s += "," + f(r.wall_pressure) + "," + f(r.coverage) + "," +
+           f(r.coverage > 0 ? r.wall_pressure / r.coverage : std::numeric_limits<double>::quiet_NaN());
     s += "," + f(r.relax.residual) + "," + std::to_string(r.relax.iterations) + "," +
          std::to_string(r.relax.volume_updates) + "," + shell::relax_stop_name(r.relax.stop);
     if (job.timings) s += "," + f(seconds);
@@ -227,11 +239,12 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   }
   const auto& targets = run.options().targets;  // phi (a --dphi list resolved by start/restore)
   for (double t : targets)
-    if (t < run.phi_jammed() && job.resume.empty())
+    if (t < run.phi_jammed() && job.resume.empty() && !o.walls)
       throw UsageError(fmt::format("--phi: target {} is below the starting volume fraction phi_J = {} of these shells",
                                    io::format_number(t), io::format_number(run.phi_jammed())));
   remember();
-  const double span = std::max(targets.back() - run.phi_jammed(), 1e-12);
+  const double phi_from = o.walls ? o.phi_start : run.phi_jammed();
+  const double span = std::max(targets.back() - phi_from, 1e-12);
   bar.update(0);
 
   std::optional<io::AtomicOutput> csv_out;
@@ -251,10 +264,16 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     csv.meta("shells", std::to_string(n_shells));
     csv.meta("vertices_per_shell", std::to_string(run.packing().shell_vertex_counts.front()));
     csv.meta("phi_J", io::format_number(run.phi_jammed()));
+    if (o.walls) {
+      csv.meta("walls", wall_name);
+      csv.meta("phi_start", io::format_number(o.phi_start));
+    }
     std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
                                     "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
                                     "asphericity_d02", "delta_eps", "volume_error", "energy_Ed3"};
     for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
+    if (o.walls)
+      for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);
     for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
     if (job.timings) header.push_back("seconds");
     csv.header(header);
@@ -285,7 +304,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     info.periodic = run.packing().periodic;
     info.shell_vertex_counts = run.packing().shell_vertex_counts;
     const auto* p = s.pressure();
-    const std::vector<std::string> comments{provenance,
+    std::vector<std::string> comments{provenance,
                                             "D0=1",
                                             "phi=" + io::format_number(phi),
                                             "E=" + io::format_number(m.material.youngs_modulus),
@@ -299,6 +318,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                             "step=" + std::to_string(run.step_index()),
                                             "turgor=" + join(p->turgors()),
                                             "volume0=" + join(p->target_volumes())};
+    if (o.walls) comments.push_back("walls=" + wall_name);
     mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
     io::write_off(replace_phi(job.output_pattern, io::format_number(phi)), V, s.rest().F, comments, &info);
   };
@@ -342,7 +362,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     rows.push_back(format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
     if (row.target) write_packing(*row.target);
     remember();
-    bar.update(std::min(1.0, (run.phi() - run.phi_jammed()) / span));
+    bar.update(std::min(1.0, (run.phi() - phi_from) / span));
     note(row.relax.residual);
     if (std::chrono::duration<double>(clock::now() - last_checkpoint).count() >= job.checkpoint_every) {
       save();

@@ -1,5 +1,7 @@
 #pragma once
-// `shellpack compress`'s job around the protocol of lib/shell/compression: the inputs read and
+// `shellpack compress`'s job around the protocol of lib/shell/compression (periodic, or the
+// rigid box with run.walls: then compress.csv adds wall_pressure_E, coverage and their ratio,
+// and the packing OFFs say `# periodic 0 0 0` and walls=): the inputs read and
 // checked before any work (a periodic jammed sphere packing, a closed outward cell mesh, the
 // targets above the starting phi), the shells built and inflated, then box steps until the last
 // target phi, with

@@ -1,11 +1,13 @@
 #include "shell/compression.hpp"
 
 #include "shell/observables.hpp"
+#include "shell/wall_load.hpp"
 
 #include "core/errors.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -18,6 +20,8 @@ ShellSystem build(const ShellPacking& p, const CompressionOptions& o) {
   m.load.turgor = o.turgor0;
   m.contact.box = p.box;
   m.contact.box_periodic = p.periodic;
+  m.walls = o.walls;
+  m.contact.walls.clear();
   return make_shell_system(p.mesh, m);
 }
 }  // namespace
@@ -26,6 +30,8 @@ Compression::Compression(ShellPacking packing, CompressionOptions options)
     : packing_(std::move(packing)), options_(std::move(options)), system_(build(packing_, options_)), box_(packing_.box) {
   if (!system_.pressure() || !system_.contacts()) throw UsageError("compress: needs a pressure model and contacts");
   if (!(options_.step > 0)) throw UsageError("compress: the box step must be positive");
+  if (options_.walls && !(options_.phi_start > 0 && options_.phi_start < 1))
+    throw UsageError("compress: the starting volume fraction of the walled box must lie in (0, 1)");
   relax_ = options_.relax;
   relax_.force_scale =
       default_force_scale(packing_.mesh, options_.model.material.youngs_modulus, options_.model.material.thickness);
@@ -48,6 +54,115 @@ double Compression::phi() const {
 void Compression::set_box(const Eigen::Vector3d& box) {
   box_ = box;
   system_.contacts()->set_box(box_, packing_.periodic);
+  if (open_) system_.walls()->set_walls(box_walls(box_, packing_.periodic));
+}
+
+std::vector<Eigen::Vector3d> Compression::centroids() const {
+  std::vector<Eigen::Vector3d> c;
+  for (std::size_t k = 0; k + 1 < offsets_.size(); ++k) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) sum += system_.x.segment<3>(3 * v);
+    c.push_back(sum / static_cast<double>(offsets_[k + 1] - offsets_[k]));
+  }
+  return c;
+}
+
+void Compression::open_box() {
+  const double rv = options_.model.contact.vertex_radius;
+  const auto c = centroids();
+  const std::size_t n = c.size();
+  // Each shell's extent about its centroid, widened by the vertex sphere and a gap of R_v.
+  std::vector<Eigen::Vector3d> lo(n), hi(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    lo[k] = hi[k] = Eigen::Vector3d::Zero();
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) {
+      const Eigen::Vector3d d = system_.x.segment<3>(3 * v) - c[k];
+      lo[k] = lo[k].cwiseMin(d);
+      hi[k] = hi[k].cwiseMax(d);
+    }
+    lo[k].array() -= 2 * rv;
+    hi[k].array() += 2 * rv;
+  }
+  // The enclosing box with the centroids times f; its phi falls as f grows.
+  const auto bounds = [&](double f, Eigen::Vector3d& low, Eigen::Vector3d& high) {
+    low.setConstant(std::numeric_limits<double>::infinity());
+    high = -low;
+    for (std::size_t k = 0; k < n; ++k) {
+      low = low.cwiseMin(f * c[k] + lo[k]);
+      high = high.cwiseMax(f * c[k] + hi[k]);
+    }
+  };
+  double volume = 0;
+  for (double v0 : system_.pressure()->target_volumes()) volume += v0;
+  const auto phi_at = [&](double f) {
+    Eigen::Vector3d low, high;
+    bounds(f, low, high);
+    return volume / (high - low).prod();
+  };
+  const double phi_enclosed = phi_at(1.0);
+  if (!(options_.phi_start < phi_enclosed))
+    throw UsageError("--phi-start " + std::to_string(options_.phi_start) +
+                     " must lie below the volume fraction of the inflated jammed shells in the box enclosing them (" +
+                     std::to_string(phi_enclosed) + "; phi_J = " + std::to_string(phi_jammed_) + ")");
+  double a = 1.0, b = 2.0;
+  while (phi_at(b) > options_.phi_start) b *= 2;
+  for (int it = 0; it < 200 && b - a > 1e-15 * b; ++it) {
+    const double m = 0.5 * (a + b);
+    (phi_at(m) > options_.phi_start ? a : b) = m;
+  }
+  Eigen::Vector3d low, high;
+  bounds(b, low, high);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d shift = (b - 1.0) * c[k] - low;
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) system_.x.segment<3>(3 * v) += shift;
+  }
+  packing_.periodic = {false, false, false};
+  open_ = true;
+  set_box(high - low);
+}
+
+double Compression::free_advance() const {
+  const double rv = options_.model.contact.vertex_radius;
+  const auto c = centroids();
+  const std::size_t n = c.size();
+  // Bounding spheres of the vertex spheres about each centroid.
+  std::vector<double> rho(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v)
+      rho[k] = std::max(rho[k], (system_.x.segment<3>(3 * v) - c[k]).norm());
+    rho[k] += rv;
+  }
+  // Two rigidly swept shells approach each other by at most the box side's change; a shell
+  // fits between two walls while the side exceeds its diameter.
+  double gap = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    gap = std::min(gap, box_.minCoeff() - 2.0 * rho[i]);
+    for (std::size_t j = i + 1; j < n; ++j) gap = std::min(gap, (c[i] - c[j]).norm() - rho[i] - rho[j]);
+  }
+  return std::max(gap, 0.0);
+}
+
+void Compression::sweep(double s) {
+  const double rv = options_.model.contact.vertex_radius;
+  const Eigen::Vector3d advance = 0.5 * (1.0 - s) * box_;  // of each wall
+  Eigen::VectorXd& x = system_.x;
+  for (std::size_t k = 0; k + 1 < offsets_.size(); ++k) {
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) {
+      low = low.cwiseMin(x.segment<3>(3 * v));
+      high = high.cwiseMax(x.segment<3>(3 * v));
+    }
+    // The overlaps with the low and high walls before and after the walls move, in the frame
+    // of the old box; the shell moves by the growth of its overlap (towards the centre).
+    Eigen::Vector3d shift = -advance;  // the new frame: walls at 0 and s L
+    for (int a = 0; a < 3; ++a) {
+      const double lo_old = rv - low[a], hi_old = high[a] + rv - box_[a];
+      shift[a] += (std::max(0.0, lo_old + advance[a]) - std::max(0.0, lo_old)) -
+                  (std::max(0.0, hi_old + advance[a]) - std::max(0.0, hi_old));
+    }
+    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) x.segment<3>(3 * v) += shift;
+  }
+  set_box(box_ * s);
 }
 
 void Compression::wrap_shells() {
@@ -77,9 +192,10 @@ CompressionRow Compression::start(const RelaxProgress& progress) {
   wrap_shells();
   phi_jammed_ = phi();
   resolve_relative_targets();
+  if (options_.walls) open_box();
   step_ = 0;
   next_target_ = 0;
-  while (next_target_ < options_.targets.size() && options_.targets[next_target_] <= phi_jammed_) ++next_target_;
+  while (next_target_ < options_.targets.size() && options_.targets[next_target_] <= phi()) ++next_target_;
   CompressionRow row = observe();
   row.relax = r;
   return row;
@@ -91,18 +207,23 @@ CompressionRow Compression::advance(const RelaxProgress& progress) {
   const double longest = box_.maxCoeff();
   const double by_step = 1.0 - options_.step / longest;
   const double to_target = std::cbrt(phi() / target);
-  const bool lands = to_target >= by_step;
-  const double s = lands ? to_target : by_step;
-  // Affine: every shell moves rigidly with its vertex centroid.
-  Eigen::VectorXd& x = system_.x;
-  for (std::size_t k = 0; k + 1 < offsets_.size(); ++k) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) c += x.segment<3>(3 * v);
-    c /= static_cast<double>(offsets_[k + 1] - offsets_[k]);
-    const Eigen::Vector3d shift = (s - 1.0) * c;
-    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) x.segment<3>(3 * v) += shift;
+  // Walls: while the shells' bounding spheres are apart, the rigid sweep is exact (no shell
+  // meets another or both walls of an axis), so the step may be as large as their gaps allow.
+  const double step_factor = open_ ? 1.0 - std::max(options_.step, free_advance()) / longest : by_step;
+  const bool lands = to_target >= step_factor;
+  const double s = lands ? to_target : step_factor;
+  if (open_) {
+    sweep(s);
+  } else {
+    // Affine: every shell moves rigidly with its vertex centroid.
+    Eigen::VectorXd& x = system_.x;
+    const auto c = centroids();
+    for (std::size_t k = 0; k + 1 < offsets_.size(); ++k) {
+      const Eigen::Vector3d shift = (s - 1.0) * c[k];
+      for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) x.segment<3>(3 * v) += shift;
+    }
+    set_box(box_ * s);
   }
-  set_box(box_ * s);
   RelaxResult r;
   try {
     r = relax(system_, relax_, progress);
@@ -131,12 +252,8 @@ CompressionRow Compression::observe() const {
   row.dphi = row.phi - phi_jammed_;
   row.box_side = box_.maxCoeff();
   // Shell centres (vertex centroids) for the molecular virial.
-  std::vector<Eigen::Vector3d> centre(n, Eigen::Vector3d::Zero());
+  const std::vector<Eigen::Vector3d> centre = centroids();
   const auto& shell_of = system_.contacts()->vertex_shells();
-  for (int k = 0; k < n; ++k) {
-    for (int v = offsets_[k]; v < offsets_[k + 1]; ++v) centre[k] += x.segment<3>(3 * v);
-    centre[k] /= static_cast<double>(offsets_[k + 1] - offsets_[k]);
-  }
   // Contacts: touching shell pairs, and the virial sum_contacts F_ij . (c_I - c_J), with the
   // centres' separation taken through the contact's own image: d_ij - (x_i - c_I) + (x_j - c_J).
   std::vector<char> touch(static_cast<std::size_t>(n) * n, 0);
@@ -170,6 +287,12 @@ CompressionRow Compression::observe() const {
   row.asphericity /= n;
   row.delta_eps /= n;
   row.volume_error = system_.pressure()->volume_error(span_of(x));
+  if (open_) {
+    const mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(x.data(), x.size() / 3, 3);
+    const WallLoad load = wall_load(V, system_.rest().F, box_, packing_.periodic, options_.model.contact);
+    row.wall_pressure = load.pressure() / options_.model.material.youngs_modulus;
+    row.coverage = load.coverage();
+  }
   row.term_energies = system_.term_energies(x);
   for (double e : row.term_energies) row.energy += e;
   const double unit = options_.model.material.youngs_modulus;
@@ -207,6 +330,10 @@ void Compression::restore(const CompressionState& s) {
       s.volume0.size() != s.turgor.size())
     throw std::invalid_argument("compress: a state of another packing");
   step_ = s.step;
+  if (options_.walls) {
+    packing_.periodic = {false, false, false};
+    open_ = true;
+  }
   next_target_ = s.next_target;
   phi_jammed_ = s.phi_jammed;
   resolve_relative_targets();
@@ -214,6 +341,9 @@ void Compression::restore(const CompressionState& s) {
   system_.pressure()->set_turgors(s.turgor);
   system_.pressure()->set_target_volumes(s.volume0);
   set_box(s.box);
+  // A resume may name other targets: never one the state has already passed.
+  while (next_target_ < options_.targets.size() && options_.targets[next_target_] <= phi() * (1.0 + 1e-9))
+    ++next_target_;
 }
 
 }  // namespace cmp::shell

@@ -16,6 +16,19 @@
 // The shells are kept whole (unwrapped); after each step a shell whose vertex centroid left
 // the box is moved back by a box vector. Everything is deterministic: the same start gives the
 // same bits on any thread count.
+//
+// The rigid-box variant (options.walls; Fig. 4.5, B.3.1): after the inflation in the jammed
+// periodic packing, the shells' vertex centroids are spread affinely (the shells moved rigidly)
+// until the box enclosing them, with a gap of R_v between the outermost vertex spheres and each
+// wall, holds phi_start. Then the box [0, L) has rigid walls on its six faces (hertz-walls) and
+// no periodic images. A box step moves every wall inward by the same amount (both walls of an
+// axis by half the side's change; the frame keeps the walls at 0 and L); the shells are not
+// rescaled: a shell the moving wall reaches is translated rigidly by the wall's advance into it
+// (the start of the relaxation, which then resolves the shell-shell overlaps this causes). While
+// the bounding spheres of the shells (with R_v) are apart by g, and narrower than the box, a
+// step may shrink the box side by up to g instead of `step` (two swept shells approach by at
+// most the side's change, so the sweep leaves them untouched and the relaxation has nothing to
+// do): the dilute approach costs a few steps, and shells the walls push are never deformed.
 #include "shell/relax.hpp"
 #include "shell/shell_model.hpp"
 #include "shell/shell_packing.hpp"
@@ -35,6 +48,8 @@ struct CompressionOptions {
   // they become phi_J + dphi, rounded to 6 decimals, at start() and restore().
   bool targets_relative = false;
   RelaxParameters relax;       // force_scale is set from the mesh (E t a)
+  bool walls = false;          // the rigid-box variant (model.contact.wall_modulus: E_w, rigid by default)
+  double phi_start = 0.08;     // walls: the dilute start, below the jammed phi
 };
 
 struct CompressionRow {
@@ -50,6 +65,8 @@ struct CompressionRow {
   double volume_error = 0;      // max_i |V_i - V0_i| / V0_i
   double energy = 0;            // total [E D_0^3]
   std::vector<double> term_energies;
+  double wall_pressure = 0;     // walls: total normal wall force / total wall area [units of E]
+  double coverage = 0;          // walls: Theta, wall-touching face area / wall area (shell/wall_load.hpp)
   RelaxResult relax;
   std::optional<std::size_t> target;  // the index of the target phi this step landed on
 };
@@ -69,9 +86,12 @@ class Compression {
   // Builds the shell system of the packing (throws cmp::UsageError for bad parameters).
   Compression(ShellPacking packing, CompressionOptions options);
 
-  // Inflates at Pi_0 in the start box, fixes V0 and phi_J; the row of step 0.
+  // Inflates at Pi_0 in the start box, fixes V0 and phi_J (walls: then spreads the shells to
+  // phi_start, cmp::UsageError when phi_start is not below what the inflated packing allows);
+  // the row of step 0.
   CompressionRow start(const RelaxProgress& progress = {});
-  // Continues from a saved state (of the same packing and options).
+  // Continues from a saved state (of the same packing and options; targets at or below the
+  // state's phi are skipped, so a resume may change --phi).
   void restore(const CompressionState& state);
   CompressionState state() const;
 
@@ -95,6 +115,11 @@ class Compression {
   void set_box(const Eigen::Vector3d& box);
   void wrap_shells();
   void resolve_relative_targets();  // dphi -> phi_J + dphi (once); throws cmp::UsageError above 1
+  std::vector<Eigen::Vector3d> centroids() const;
+  void open_box();  // walls: the dilute start from the inflated periodic packing
+  double free_advance() const;  // walls: the box side change no rigid sweep can bring shells into contact by
+  void sweep(double s);        // walls: the box times s, walls moving in, shells pushed rigidly
+  bool open_ = false;          // walls in place (no periodic images)
   ShellPacking packing_;
   CompressionOptions options_;
   ShellSystem system_;

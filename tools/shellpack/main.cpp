@@ -23,7 +23,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
+#include <limits>
 
 using namespace cmp;
 
@@ -46,6 +48,7 @@ struct Options {
   packrun::CompressJob compress;
   std::string compress_phi, compress_dphi;
   double compress_p0 = 0.0025;
+  double compress_wall_modulus = std::numeric_limits<double>::infinity();
   bool no_penetration_check = false;
 };
 
@@ -97,6 +100,15 @@ void check_compress(cli::Tool& tool, Options& o, const std::vector<std::string>&
   if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
   tool.check(m.pressure == "volume" || m.pressure == "turgor", "--pressure-model",
              "must be volume (constant volume) or turgor (constant Pi), got '" + m.pressure + "'");
+  if (job.run.walls) {
+    tool.check(job.run.phi_start > 0 && job.run.phi_start < 1, "--phi-start",
+               "must lie in (0, 1) (the dilute start of the walled box, e.g. 0.08)");
+    tool.check(job.run.targets.empty() || job.run.targets.front() > job.run.phi_start, "--phi",
+               "the targets must lie above --phi-start");
+    m.contact.wall_modulus = o.compress_wall_modulus * m.material.youngs_modulus;
+  } else {
+    tool.check(std::isinf(o.compress_wall_modulus), "--wall-modulus", "needs --walls");
+  }
   tool.check(job.resume.empty() || !job.checkpoint.empty(), "--resume",
              "needs the checkpoint's --checkpoint (kept in the file's arguments)");
   job.run.turgor0 = o.compress_p0 * m.material.youngs_modulus;
@@ -358,6 +370,11 @@ int main(int argc, char** argv) {
     cp->add_option("--pressure-model", cm.pressure, "volume (incompressible fill: Pi updated until every shell is "
                                                     "within 0.1 % of V0) or turgor (Pi = Pi_0 fixed)")
         ->default_str("volume");
+    cp->add_flag("--walls", cj.run.walls,
+                 "rigid box (Fig. 4.5): start dilute at --phi-start, walls on all six faces sweep the shells inward");
+    tool.add_double(*cp, "--phi-start", cj.run.phi_start, "--walls: the starting volume fraction (below the jammed one)");
+    tool.add_double(*cp, "--wall-modulus", o.compress_wall_modulus, "--walls: Young's modulus of the walls [E] (default rigid)",
+                    cli::positive());
     tool.add_double(*cp, "--vertex-radius", cj.vertex_radius,
                     "Hertz vertex radius R_v [D0] (0: t, or 0.75 x the largest triangle circumradius if larger)",
                     cli::non_negative());
