@@ -36,7 +36,7 @@ for n in $sizes; do
   # settle into contact a little above the start, where Z crosses 6 - 4/N).
   "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y dZ --where 'dZ>0' --where 'dphi<=0.15' \
     -q -o "$dir/dz_fit.csv"
-  "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y delta_eps --where 'dphi>0' --where 'dphi<=0.15' \
+  "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y delta_eps_mean --where 'dphi>0' --where 'dphi<=0.15' \
     -q -o "$dir/shape_fit.csv"
   runs="$runs $dir"
   labels="${labels:+$labels }N=$n"

@@ -47,7 +47,7 @@ set xlabel "{/Symbol df}"
 set ylabel "{/Symbol de}"
 set xrange [1e-3:0.5]
 set yrange [*:*]
-plot for [k = 1:nruns] file(k, "compress.csv") using "dphi":"delta_eps" with points pt 7 ps 0.5 lc k title label(k), \
+plot for [k = 1:nruns] file(k, "compress.csv") using "dphi":"delta_eps_mean" with points pt 7 ps 0.5 lc k title label(k), \
      2 * x**2 dt 2 lc rgb "#888888" title "{/Symbol df}^2"
 unset logscale
 

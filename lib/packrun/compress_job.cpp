@@ -270,7 +270,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     }
     std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
                                     "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
-                                    "asphericity_d02", "delta_eps", "volume_error", "energy_Ed3"};
+                                    "asphericity_mean_d02", "delta_eps_mean", "volume_error", "energy_Ed3"};
     for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
     if (o.walls)
       for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);

@@ -1,6 +1,7 @@
 #include "shell/compression.hpp"
 
 #include "shell/observables.hpp"
+#include "shell/shell_shapes.hpp"
 #include "shell/wall_load.hpp"
 
 #include "core/errors.hpp"
@@ -279,17 +280,16 @@ CompressionRow Compression::observe() const {
   row.turgor_mean = mean / options_.turgor0;
   row.turgor_cv = mean != 0 ? std::sqrt(var) / std::abs(mean) : 0.0;
   // Shapes.
-  for (int k = 0; k < n; ++k) {
-    const auto g = gyration_eigenvalues(x.segment(3 * offsets_[k], 3 * (offsets_[k + 1] - offsets_[k])));
-    row.asphericity += g[0] - 0.5 * (g[1] + g[2]);
-    row.delta_eps += std::sqrt(g[0] / g[2]) - 1.0;
+  const mesh::VertexMatrix vertices = Eigen::Map<const mesh::VertexMatrix>(x.data(), x.size() / 3, 3);
+  for (const ShellShape& shape : shell_shapes(vertices, offsets_)) {  // shells are whole: no unwrapping
+    row.asphericity += shape.asphericity;
+    row.delta_eps += shape.aspect_deviation;
   }
   row.asphericity /= n;
   row.delta_eps /= n;
   row.volume_error = system_.pressure()->volume_error(span_of(x));
   if (open_) {
-    const mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(x.data(), x.size() / 3, 3);
-    const WallLoad load = wall_load(V, system_.rest().F, box_, packing_.periodic, options_.model.contact);
+    const WallLoad load = wall_load(vertices, system_.rest().F, box_, packing_.periodic, options_.model.contact);
     row.wall_pressure = load.pressure() / options_.model.material.youngs_modulus;
     row.coverage = load.coverage();
   }
