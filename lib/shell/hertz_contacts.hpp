@@ -14,6 +14,7 @@
 #include "shell/shell_parameters.hpp"
 
 #include "mesh/tri_mesh.hpp"
+#include "neighbours/box.hpp"
 
 #include <Eigen/Core>
 
@@ -91,6 +92,15 @@ class WallContacts final : public EnergyTerm {
   double radius_, estar_;
   std::vector<Plane> walls_;
 };
+
+// Throws cmp::UsageError naming `style` if a face of `rest` refers to a vertex outside it.
+void check_face_indices(const mesh::TriMesh& rest, const char* style);
+
+// The cell-grid box of contacts cut off at `cutoff` among the vertices X: their bounding box
+// grown by the cutoff, with the periodic axes of `sides` (if any) replaced by [0, L) and
+// flagged periodic. Throws cmp::ComputationError naming `style` on a non-finite position.
+neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
+                            const std::optional<VertexContacts::BoxSides>& sides, const char* style);
 
 inline double hertz_energy(double h, double effective_modulus, double effective_radius) {
   return h > 0 ? (8.0 / 15.0) * effective_modulus * std::sqrt(effective_radius) * h * h * std::sqrt(h) : 0.0;
