@@ -36,6 +36,23 @@ neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
   return box;
 }
 
+neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
+                                  const std::optional<VertexContacts::BoxSides>& sides, const char* style) {
+  const neighbours::Box box = contact_box(X, cutoff, sides, style);
+  Eigen::Vector3i cells = Eigen::Vector3i::Zero();
+  if (sides) {
+    // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
+    // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
+    // one cell per vertex is enough and visits far fewer cells.
+    const Eigen::Vector3i most = neighbours::CellGrid(box, cutoff).cells_per_axis();
+    const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(X.rows()))));
+    for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
+  }
+  neighbours::CellGrid grid(box, cutoff, cells);
+  grid.build(X);
+  return grid;
+}
+
 VertexContacts::VertexContacts(const mesh::TriMesh& rest, const ContactParameters& p)
     : radius_(p.vertex_radius), estar_(p.vertex_effective_modulus()) {
   validate(p, "hertz-vertices");
@@ -51,18 +68,7 @@ void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
   std::copy(x.begin(), x.end(), scratch_.data());
   if (n == 0) return;
   const double cutoff = 2.0 * radius_;
-  const neighbours::Box box = contact_box(scratch_, cutoff, box_, "hertz-vertices");
-  Eigen::Vector3i cells = Eigen::Vector3i::Zero();
-  if (box_) {
-    // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
-    // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
-    // one cell per vertex is enough and visits far fewer cells.
-    const Eigen::Vector3i most = neighbours::CellGrid(box, cutoff).cells_per_axis();
-    const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(n))));
-    for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
-  }
-  neighbours::CellGrid grid(box, cutoff, cells);
-  grid.build(scratch_);
+  const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-vertices");
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d& d, double r2) {
     if (shell_of_[i] == shell_of_[j]) return;
     f(i, j, d, std::sqrt(r2));

@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -77,13 +78,30 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
       longest2 = std::max(longest2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     }
   const double longest = std::sqrt(longest2), cutoff = delta_ + longest;
-  const neighbours::Box box = contact_box(scratch_, cutoff, box_, "hertz-faces");
-  for (int a = 0; a < 3; ++a)
-    if (box.periodic[a] && !(box.lengths[a] >= 2.0 * (cutoff + longest)))
-      throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box.lengths[a]) +
-                             " is under 2 (delta + 2 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
-  neighbours::CellGrid grid(box, cutoff);
-  grid.build(scratch_);
+  if (box_)
+    for (int a = 0; a < 3; ++a)
+      if (box_->periodic[a] && !(box_->lengths[a] >= 2.0 * (cutoff + longest)))
+        throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
+                               " is under 2 (delta + 2 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
+  // Vertex pairs of different shells within the cutoff (one pass over the cells, on one
+  // thread), then each vertex's partners in pair order (CSR).
+  const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
+  pairs_.clear();
+  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double) {
+    if (shell_of_[i] != shell_of_[j]) pairs_.insert(pairs_.end(), {i, j});
+  });
+  partner_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int v : pairs_) ++partner_start_[v + 1];
+  for (Eigen::Index v = 0; v < n; ++v) partner_start_[v + 1] += partner_start_[v];
+  partners_.resize(pairs_.size());
+  {
+    std::vector<int>& next = partner_next_;
+    next.assign(partner_start_.begin(), partner_start_.end() - 1);
+    for (std::size_t k = 0; k < pairs_.size(); k += 2) {
+      partners_[next[pairs_[k]]++] = pairs_[k + 1];
+      partners_[next[pairs_[k + 1]]++] = pairs_[k];
+    }
+  }
 
   // Faces already tried for the current vertex, per thread: key generation * n + vertex.
   const int threads = std::max(1, omp_get_max_threads());
@@ -91,6 +109,7 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   const long long base = ++generation_ * static_cast<long long>(n);
   const double delta2 = delta_ * delta_;
 
+  std::atomic<bool> crowded{false};
   for_each_chunk(chunks, [&](int c) {
     std::vector<long long>& stamp = stamps_[static_cast<std::size_t>(omp_get_thread_num())];
     if (stamp.size() != faces_.size() / 3) stamp.assign(faces_.size() / 3, -1);
@@ -103,12 +122,12 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
     Best best[8];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       const int si = shell_of_[i];
-      if (si < 0) continue;
+      if (si < 0 || partner_start_[i] == partner_start_[i + 1]) continue;
       const long long key = base + i;
       const double* p = X + 3 * i;
       int found = 0;
-      grid.for_each_neighbour(scratch_, Eigen::Vector3d(p[0], p[1], p[2]), [&](int j, const Eigen::Vector3d&, double) {
-        if (shell_of_[j] == si) return;
+      for (int t = partner_start_[i]; t < partner_start_[i + 1]; ++t) {
+        const int j = partners_[t];
         for (int s = incident_start_[j]; s < incident_start_[j + 1]; ++s) {
           const int f = incident_[s];
           if (stamp[f] == key) continue;
@@ -124,19 +143,23 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
           int b = 0;
           while (b < found && best[b].shell != sf) ++b;
           if (b == found) {
-            if (found == 8) throw ComputationError("hertz-faces: a vertex within reach of more than 8 other shells");
+            if (found == 8) {  // no exception may leave a parallel region: reported below
+              crowded = true;
+              continue;
+            }
             best[found++] = {sf, f, d2, w, q};
           } else if (d2 < best[b].d2) {
             best[b] = {sf, f, d2, w, q};
           }
         }
-      });
+      }
       for (int b = 0; b < found; ++b) {
         const Best& k = best[b];
         out.push_back({static_cast<int>(i), k.face, {k.w[0], k.w[1], k.w[2]}, {-k.q[0], -k.q[1], -k.q[2]}, std::sqrt(k.d2)});
       }
     }
   });
+  if (crowded) throw ComputationError("hertz-faces: a vertex within reach of more than 8 other shells");
 }
 
 double VertexFaceContacts::energy(std::span<const double> x) const {

@@ -20,7 +20,8 @@
 //
 // Candidates come from linked cells (lib/neighbours) over the vertices, cut off at
 // delta + the longest current edge (a point of a triangle within delta of p has a corner
-// within that), and the triangles incident to those vertices. The box is the vertices'
+// within that): the pairs of vertices of different shells (one pass, one thread), then for
+// each vertex the triangles incident to its partners. The box is the vertices'
 // bounding box, or, once set_box() gave one, [0, L) with the minimum image along its periodic
 // axes: the interface of VertexContacts, so a packing run can take either style. Vertices are
 // handled in fixed chunks on all threads; energies are summed per chunk in chunk order and the
@@ -102,6 +103,7 @@ class VertexFaceContacts final : public EnergyTerm {
   double delta_, estar_, rstar_;
   std::optional<BoxSides> box_;
   mutable mesh::VertexMatrix scratch_;
+  mutable std::vector<int> pairs_, partner_start_, partners_, partner_next_;  // vertex pairs, per vertex (CSR)
   mutable std::vector<std::vector<Record>> records_;
   mutable std::vector<std::vector<long long>> stamps_;  // per thread, per face: the last key that tried it
   mutable long long generation_ = 0;                   // calls of collect(): key = generation * #V + vertex
