@@ -70,38 +70,46 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   const auto image = [&](const double* to, const double* from, double out[3]) {
     for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(to[a] - from[a], periods[a], inverse[a]);
   };
+  // Every point of a triangle lies within (its longest edge)/sqrt(3) of its nearest corner
+  // (the circumradius of an acute triangle, at most half the longest edge otherwise): a
+  // triangle within delta of p has a corner within delta + that. reach_ holds, per vertex,
+  // the largest such bound over its triangles.
+  reach_.assign(static_cast<std::size_t>(n), 0.0);
   double longest2 = 0;
-  for (std::size_t f = 0; f < faces_.size(); f += 3)
+  for (std::size_t f = 0; f < faces_.size(); f += 3) {
+    double face2 = 0;
     for (int k = 0; k < 3; ++k) {
       double e[3];
       image(X + 3 * faces_[f + k], X + 3 * faces_[f + (k + 1) % 3], e);
-      longest2 = std::max(longest2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      face2 = std::max(face2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     }
-  const double longest = std::sqrt(longest2), cutoff = delta_ + longest;
+    for (int k = 0; k < 3; ++k) reach_[faces_[f + k]] = std::max(reach_[faces_[f + k]], face2);
+    longest2 = std::max(longest2, face2);
+  }
+  const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
+  for (double& r : reach_) r = delta_ + std::sqrt(r * third);
+  const double longest = std::sqrt(longest2), cutoff = delta_ + std::sqrt(longest2 * third);
   if (box_)
     for (int a = 0; a < 3; ++a)
       if (box_->periodic[a] && !(box_->lengths[a] >= 2.0 * (cutoff + longest)))
         throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
-                               " is under 2 (delta + 2 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
+                               " is under 2 (delta + 1.58 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
   // Vertex pairs of different shells within the cutoff (one pass over the cells, on one
-  // thread), then each vertex's partners in pair order (CSR).
+  // thread), kept in the direction(s) i -> j where x_i is within j's reach, then each vertex's
+  // partners in pair order (CSR).
   const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
   pairs_.clear();
-  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double) {
-    if (shell_of_[i] != shell_of_[j]) pairs_.insert(pairs_.end(), {i, j});
+  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double r2) {
+    if (shell_of_[i] == shell_of_[j]) return;
+    if (r2 < reach_[j] * reach_[j]) pairs_.insert(pairs_.end(), {i, j});
+    if (r2 < reach_[i] * reach_[i]) pairs_.insert(pairs_.end(), {j, i});
   });
   partner_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int v : pairs_) ++partner_start_[v + 1];
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) ++partner_start_[pairs_[k] + 1];
   for (Eigen::Index v = 0; v < n; ++v) partner_start_[v + 1] += partner_start_[v];
-  partners_.resize(pairs_.size());
-  {
-    std::vector<int>& next = partner_next_;
-    next.assign(partner_start_.begin(), partner_start_.end() - 1);
-    for (std::size_t k = 0; k < pairs_.size(); k += 2) {
-      partners_[next[pairs_[k]]++] = pairs_[k + 1];
-      partners_[next[pairs_[k + 1]]++] = pairs_[k];
-    }
-  }
+  partners_.resize(pairs_.size() / 2);
+  partner_next_.assign(partner_start_.begin(), partner_start_.end() - 1);
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) partners_[partner_next_[pairs_[k]]++] = pairs_[k + 1];
 
   // Faces already tried for the current vertex, per thread: key generation * n + vertex.
   const int threads = std::max(1, omp_get_max_threads());

@@ -19,9 +19,11 @@
 // mid-surfaces t apart) instead of vertex spheres sized to the triangles.
 //
 // Candidates come from linked cells (lib/neighbours) over the vertices, cut off at
-// delta + the longest current edge (a point of a triangle within delta of p has a corner
-// within that): the pairs of vertices of different shells (one pass, one thread), then for
-// each vertex the triangles incident to its partners. The box is the vertices'
+// delta + (the longest current edge)/sqrt(3) (every point of a triangle lies within its
+// longest edge/sqrt(3) of a corner, so a triangle within delta of p has a corner within that):
+// the pairs of vertices of different shells (one pass, one thread), each kept towards the
+// vertex whose own triangles can reach the other, then for each vertex the triangles incident
+// to its partners. The box is the vertices'
 // bounding box, or, once set_box() gave one, [0, L) with the minimum image along its periodic
 // axes: the interface of VertexContacts, so a packing run can take either style. Vertices are
 // handled in fixed chunks on all threads; energies are summed per chunk in chunk order and the
@@ -59,7 +61,8 @@ class VertexFaceContacts final : public EnergyTerm {
 
   // As VertexContacts::set_box: the box [0, L), periodic along the flagged axes. Throws
   // cmp::UsageError for a side that is not positive and finite or a periodic side shorter than
-  // 4 delta. At each call, a periodic side must also exceed 2 (delta + 2 longest edges)
+  // 4 delta. At each call, a periodic side must also be at least 2 (delta + (1 + 1/sqrt 3) L),
+  // L the longest edge
   // (cmp::ComputationError otherwise).
   using BoxSides = VertexContacts::BoxSides;
   void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic);
@@ -104,6 +107,7 @@ class VertexFaceContacts final : public EnergyTerm {
   std::optional<BoxSides> box_;
   mutable mesh::VertexMatrix scratch_;
   mutable std::vector<int> pairs_, partner_start_, partners_, partner_next_;  // vertex pairs, per vertex (CSR)
+  mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
   mutable std::vector<std::vector<Record>> records_;
   mutable std::vector<std::vector<long long>> stamps_;  // per thread, per face: the last key that tried it
   mutable long long generation_ = 0;                   // calls of collect(): key = generation * #V + vertex
