@@ -5,7 +5,13 @@
 //   bench_shell                 the rows above
 //   bench_shell terms LEVEL     microseconds per add_gradient of each term, and per forces()
 //   bench_shell inflate LEVEL   one inflation to equilibrium (for perf and the threads-under-load table)
+//   bench_shell contacts LEVEL  ns per vertex of add_gradient of hertz-vertices and hertz-faces on
+//                               50 shells (D0 = 1) in a periodic box: spheres just touching, and
+//                               cubes with every facet in contact (the confluent limit)
+#include "shell/hertz_contacts.hpp"
 #include "shell/relax.hpp"
+#include "shell/shell_packing.hpp"
+#include "shell/vertex_face_contacts.hpp"
 #include "shell/shell_model.hpp"
 
 #include "spheremesh/subdivision.hpp"
@@ -76,13 +82,53 @@ void inflate(int level) {
               r.iterations);
 }
 
+// 50 shells of `level` (D0 = 1) on a 5 x 5 x 2 lattice in a periodic box: spheres whose
+// surfaces overlap by 0.02 D0 along the lattice axes, or the same meshes blown up onto cubes of
+// side 1 whose facets lie 0.01 apart (every facet vertex in contact, as at confluence). R_v =
+// 0.75 of the largest circumradius (the packing default), delta = t = 0.02.
+void contacts(int level) {
+  const auto one = spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, level, 0.5);
+  const long nv = one.V.rows(), nf = one.F.rows();
+  for (const bool cube : {false, true}) {
+    mesh::TriMesh cell = one;
+    if (cube)
+      for (long v = 0; v < nv; ++v) cell.V.row(v) *= 0.5 / cell.V.row(v).cwiseAbs().maxCoeff();
+    const double spacing = cube ? 1.01 : 0.98;
+    mesh::TriMesh m;
+    m.V.resize(50 * nv, 3);
+    m.F.resize(50 * nf, 3);
+    for (int k = 0; k < 50; ++k) {
+      const Eigen::RowVector3d c(spacing * (k % 5), spacing * (k / 5 % 5), spacing * (k / 25));
+      m.V.middleRows(k * nv, nv) = cell.V.rowwise() + c;
+      m.F.middleRows(k * nf, nf) = one.F.array() + static_cast<int>(k * nv);
+    }
+    shell::ContactParameters p;
+    p.vertex_radius = 0.75 * shell::max_circumradius(cell);
+    p.contact_distance = 0.02;
+    p.box = Eigen::Vector3d(5 * spacing, 5 * spacing, 2 * spacing);
+    const shell::VertexContacts spheres(m, p);
+    const shell::VertexFaceContacts faces(m, p);
+    const std::vector<double> x(m.V.data(), m.V.data() + m.V.size());
+    std::vector<double> g(x.size(), 0.0);
+    const long n = m.V.rows();
+    const std::string shape = cube ? "cubes" : "spheres";
+    const double ts = per_call([&] { spheres.add_gradient(x, g); });
+    const double tf = per_call([&] { faces.add_gradient(x, g); });
+    std::printf("gradient_hertz_vertices_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * ts / n,
+                spheres.contacts(x).size());
+    std::printf("gradient_hertz_faces_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * tf / n,
+                faces.contacts(x).size());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 3 && std::string(argv[1]) == "terms") return terms(std::stoi(argv[2])), 0;
   if (argc == 3 && std::string(argv[1]) == "inflate") return inflate(std::stoi(argv[2])), 0;
+  if (argc == 3 && std::string(argv[1]) == "contacts") return contacts(std::stoi(argv[2])), 0;
   if (argc != 1) {
-    std::fprintf(stderr, "usage: bench_shell [terms LEVEL | inflate LEVEL]\n");
+    std::fprintf(stderr, "usage: bench_shell [terms LEVEL | inflate LEVEL | contacts LEVEL]\n");
     return 2;
   }
   const auto m = model();

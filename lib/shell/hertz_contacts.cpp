@@ -11,8 +11,7 @@
 
 namespace cmp::shell {
 
-namespace {
-void check_faces(const mesh::TriMesh& rest, const char* style) {
+void check_face_indices(const mesh::TriMesh& rest, const char* style) {
   for (Eigen::Index f = 0; f < rest.F.rows(); ++f)
     for (int k = 0; k < 3; ++k)
       if (rest.F(f, k) < 0 || rest.F(f, k) >= rest.V.rows())
@@ -20,12 +19,45 @@ void check_faces(const mesh::TriMesh& rest, const char* style) {
                          std::to_string(rest.F(f, k)) + " of a mesh with " + std::to_string(rest.V.rows()) +
                          " vertices");
 }
-}  // namespace
+
+neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
+                            const std::optional<VertexContacts::BoxSides>& sides, const char* style) {
+  neighbours::Box box;
+  box.lower = X.colwise().minCoeff().transpose().array() - cutoff;
+  box.lengths = (X.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
+  if (!box.lower.allFinite() || !box.lengths.allFinite())
+    throw ComputationError(std::string(style) + ": a vertex position is not finite");
+  if (sides)
+    for (int a = 0; a < 3; ++a)
+      if (sides->periodic[a]) {
+        box.lower[a] = 0;
+        box.lengths[a] = sides->lengths[a];
+        box.periodic[a] = true;
+      }
+  return box;
+}
+
+neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
+                                  const std::optional<VertexContacts::BoxSides>& sides, const char* style) {
+  const neighbours::Box box = contact_box(X, cutoff, sides, style);
+  Eigen::Vector3i cells = Eigen::Vector3i::Zero();
+  if (sides) {
+    // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
+    // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
+    // one cell per vertex is enough and visits far fewer cells.
+    const Eigen::Vector3i most = neighbours::CellGrid(box, cutoff).cells_per_axis();
+    const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(X.rows()))));
+    for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
+  }
+  neighbours::CellGrid grid(box, cutoff, cells);
+  grid.build(X);
+  return grid;
+}
 
 VertexContacts::VertexContacts(const mesh::TriMesh& rest, const ContactParameters& p)
     : radius_(p.vertex_radius), estar_(p.vertex_effective_modulus()) {
   validate(p, "hertz-vertices");
-  check_faces(rest, "hertz-vertices");
+  check_face_indices(rest, "hertz-vertices");
   shell_of_ = shell_partition(rest.F, static_cast<int>(rest.V.rows())).vertex_shell;
   if (p.box) set_box(*p.box, p.box_periodic);
 }
@@ -35,26 +67,7 @@ void VertexContacts::build_pair_list(std::span<const double> x) const {
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
   const double reach = (2.0 + kSkin) * radius_;
-  neighbours::Box box;
-  box.lower = scratch_.colwise().minCoeff().transpose().array() - reach;
-  box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + reach;
-  if (!box.lower.allFinite() || !box.lengths.allFinite())
-    throw ComputationError("hertz-vertices: a vertex position is not finite");
-  // The periodic axes span [0, L) (the grid wraps the points into it). Vertices lie on
-  // surfaces, so the finest grid (cells one cutoff wide) would be mostly empty cells: about
-  // one cell per vertex visits far fewer cells.
-  for (int a = 0; a < 3; ++a)
-    if (box_->periodic[a]) {
-      box.lower[a] = 0;
-      box.lengths[a] = box_->lengths[a];
-      box.periodic[a] = true;
-    }
-  const Eigen::Vector3i most = neighbours::CellGrid(box, reach).cells_per_axis();
-  const int target = std::max(1, static_cast<int>(std::cbrt(static_cast<double>(n))));
-  Eigen::Vector3i cells;
-  for (int a = 0; a < 3; ++a) cells[a] = std::min(most[a], target);
-  neighbours::CellGrid grid(box, reach, cells);
-  grid.build(scratch_);
+  const neighbours::CellGrid grid = contact_grid(scratch_, reach, box_, "hertz-vertices");
   pairs_.clear();
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double) {
     if (shell_of_[i] != shell_of_[j]) pairs_.push_back({i, j});
@@ -101,13 +114,7 @@ void VertexContacts::for_each_contact(std::span<const double> x, Fn&& f) const {
   }
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
-  neighbours::Box box;
-  box.lower = scratch_.colwise().minCoeff().transpose().array() - cutoff;
-  box.lengths = (scratch_.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
-  if (!box.lower.allFinite() || !box.lengths.allFinite())
-    throw ComputationError("hertz-vertices: a vertex position is not finite");
-  neighbours::CellGrid grid(box, cutoff);
-  grid.build(scratch_);
+  const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-vertices");
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d& d, double r2) {
     if (shell_of_[i] == shell_of_[j]) return;
     f(i, j, d, std::sqrt(r2));

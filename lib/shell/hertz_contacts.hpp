@@ -16,6 +16,8 @@
 #include "shell/shell_parameters.hpp"
 
 #include "mesh/tri_mesh.hpp"
+#include "neighbours/box.hpp"
+#include "neighbours/cell_grid.hpp"
 
 #include <Eigen/Core>
 
@@ -103,6 +105,21 @@ class WallContacts final : public EnergyTerm {
   double radius_, estar_;
   std::vector<Plane> walls_;
 };
+
+// Throws cmp::UsageError naming `style` if a face of `rest` refers to a vertex outside it.
+void check_face_indices(const mesh::TriMesh& rest, const char* style);
+
+// The cell-grid box of contacts cut off at `cutoff` among the vertices X: their bounding box
+// grown by the cutoff, with the periodic axes of `sides` (if any) replaced by [0, L) and
+// flagged periodic. Throws cmp::ComputationError naming `style` on a non-finite position.
+neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
+                            const std::optional<VertexContacts::BoxSides>& sides, const char* style);
+
+// The cell grid of those contacts, built on X: cells one cutoff wide in open space; in a box,
+// about cbrt(#X) cells per axis at most (vertices lie on surfaces: finer grids are mostly
+// empty cells).
+neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
+                                  const std::optional<VertexContacts::BoxSides>& sides, const char* style);
 
 inline double hertz_energy(double h, double effective_modulus, double effective_radius) {
   return h > 0 ? (8.0 / 15.0) * effective_modulus * std::sqrt(effective_radius) * h * h * std::sqrt(h) : 0.0;

@@ -35,6 +35,8 @@ void validate(const ContactParameters& p, const char* style) {
   const std::string s = style;
   if (!(std::isfinite(p.vertex_radius) && p.vertex_radius > 0))
     throw UsageError(s + ": vertex radius R_v = " + num(p.vertex_radius) + " must be positive and finite");
+  if (!(std::isfinite(p.contact_distance) && p.contact_distance > 0))
+    throw UsageError(s + ": contact distance delta = " + num(p.contact_distance) + " must be positive and finite");
   if (!(std::isfinite(p.youngs_modulus) && p.youngs_modulus > 0))
     throw UsageError(s + ": Young's modulus E = " + num(p.youngs_modulus) + " must be positive and finite");
   if (!(p.wall_modulus > 0)) throw UsageError(s + ": wall modulus E_w = " + num(p.wall_modulus) + " must be positive");

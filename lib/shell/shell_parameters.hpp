@@ -52,6 +52,9 @@ struct Plane {
 // force (4/3) E* sqrt(R*) h^(3/2) is B.60's, repulsive.
 struct ContactParameters {
   double vertex_radius = 0.1;     // R_v [length], > 0 (the thesis takes the wall thickness t)
+  // hertz-faces: the contact distance delta [length], > 0, at which a vertex touches another
+  // shell's mid-surface (the wall thickness t: each wall's outer face t/2 from its mid-surface).
+  double contact_distance = 0.1;
   double youngs_modulus = 1.0;    // E of the vertex spheres [pressure], > 0
   double poisson_ratio = 0.5;     // nu of the vertex spheres, in (-1, 0.5]
   double wall_modulus = std::numeric_limits<double>::infinity();  // E_w, > 0; infinity: rigid
@@ -69,7 +72,7 @@ struct ContactParameters {
   }
 };
 
-// Throws cmp::UsageError naming the first bad value (R_v, moduli, Poisson ratios, a wall
+// Throws cmp::UsageError naming the first bad value (R_v, delta, moduli, Poisson ratios, a wall
 // normal that is not a finite unit vector or a non-finite wall point).
 void validate(const ContactParameters& p, const char* style);
 

@@ -5,6 +5,7 @@
 #include "shell/hertz_contacts.hpp"
 #include "shell/svk_membrane.hpp"
 #include "shell/turgor_pressure.hpp"
+#include "shell/vertex_face_contacts.hpp"
 
 #include "core/errors.hpp"
 
@@ -60,6 +61,10 @@ const ContactStyle kContact[] = {
     {"hertz-vertices", "Hertz repulsion of vertex spheres (radius R_v) of different shells, over linked cells (B.60)",
      [](const mesh::TriMesh& r, const ContactParameters& p) -> std::unique_ptr<EnergyTerm> {
        return std::make_unique<VertexContacts>(r, p);
+     }},
+    {"hertz-faces", "Hertz repulsion of every vertex from the closest triangle of each other shell within delta (B.60 with R* = delta/2)",
+     [](const mesh::TriMesh& r, const ContactParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<VertexFaceContacts>(r, p);
      }},
     {"hertz-walls", "Hertz repulsion of vertex spheres (radius R_v) from rigid planes (B.60 with R* = R_v)",
      [](const mesh::TriMesh& r, const ContactParameters& p) -> std::unique_ptr<EnergyTerm> {

@@ -6,6 +6,7 @@
 //   - stretching and bending: zero energy and zero gradient on the rest mesh
 #include "shell/hertz_contacts.hpp"
 #include "shell/styles.hpp"
+#include "shell/vertex_face_contacts.hpp"
 
 #include "core/errors.hpp"
 
@@ -29,11 +30,12 @@ namespace {
 const MaterialParameters kMaterial{3.0, 0.3, 0.1};
 const PressureParameters kPressure{2.5};
 
-// Contacts: vertex spheres of radius 0.15 and two walls at z = -+0.95 facing each other; on
+// Contacts: vertex spheres of radius 0.15, a contact distance of 0.2 to faces, and two walls at z = -+0.95 facing each other; on
 // two shells (below) the deformed state overlaps both the other shell and the walls.
 ContactParameters contact_parameters() {
   ContactParameters p;
   p.vertex_radius = 0.15;
+  p.contact_distance = 0.2;
   p.youngs_modulus = 3.0;
   p.poisson_ratio = 0.3;
   p.wall_modulus = 10.0;
@@ -183,7 +185,15 @@ TEST_CASE("style tables have unique names and one-line descriptions and find by 
   CHECK_THROWS_WITH(pressure_style(""), Catch::Contains("unknown pressure model ''"));
 }
 
-TEST_CASE("hertz-vertices in a periodic box: forces match the energy, and a shell may sit in any image",
+// set_box of the shell-shell contact styles (the same interface on each).
+static void set_box_of(EnergyTerm& term, const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) {
+  if (auto* v = dynamic_cast<VertexContacts*>(&term)) return v->set_box(lengths, periodic);
+  auto* f = dynamic_cast<VertexFaceContacts*>(&term);
+  REQUIRE(f);
+  f->set_box(lengths, periodic);
+}
+
+TEST_CASE("hertz-vertices and hertz-faces in a periodic box: forces match the energy, and a shell may sit in any image",
           "[shell][styles]") {
   // Two overlapping shells (as above) in a periodic box of side 6 along every axis, placed so
   // that the contact region straddles the x = 0 face: the pairs are found only through the
@@ -192,13 +202,14 @@ TEST_CASE("hertz-vertices in a periodic box: forces match the energy, and a shel
   p.walls.clear();
   const double L = 6.0;
   p.box = Eigen::Vector3d(L, L, L);
+  for (const char* style : {"hertz-vertices", "hertz-faces"})
   for (unsigned seed : {1u, 2u}) {
-    INFO("seed " << seed);
+    INFO(style << " seed " << seed);
     const auto rest = two_shells(seed);
-    const auto periodic = contact_style("hertz-vertices").make(rest, p);
+    const auto periodic = contact_style(style).make(rest, p);
     ContactParameters open = p;
     open.box.reset();
-    const auto free = contact_style("hertz-vertices").make(rest, open);
+    const auto free = contact_style(style).make(rest, open);
     auto x = deformed(rest, 200 + seed);
     // Centre the pair on the x = 0 face: the first shell's vertices at x < 0 wrap to x ~ L.
     x = fx::moved(x, Eigen::Matrix3d::Identity(), Eigen::Vector3d(-0.97, 1.0, 2.0));
@@ -218,11 +229,9 @@ TEST_CASE("hertz-vertices in a periodic box: forces match the energy, and a shel
     CHECK(free->energy(y) == 0.0);
     CHECK(periodic->energy(y) == Approx(e).epsilon(1e-11));
     CHECK(gradient_error(*periodic, y, 1e-6) < 1e-7);
-    // A box with a side under 4 R_v is refused.
-    auto* vc = dynamic_cast<VertexContacts*>(periodic.get());
-    REQUIRE(vc);
-    CHECK_THROWS_AS(vc->set_box(Eigen::Vector3d(L, 0.5, L), {true, true, true}), cmp::UsageError);
-    CHECK_NOTHROW(vc->set_box(Eigen::Vector3d(L, 0.5, L), {true, false, true}));
+    // A periodic side under 4 R_v (4 delta) is refused.
+    CHECK_THROWS_AS(set_box_of(*periodic, Eigen::Vector3d(L, 0.5, L), {true, true, true}), cmp::UsageError);
+    set_box_of(*periodic, Eigen::Vector3d(L, 0.5, L), {true, false, true});
     CHECK(periodic->energy(x) == Approx(e).epsilon(1e-13));
   }
 }

@@ -1,0 +1,231 @@
+#include "shell/vertex_face_contacts.hpp"
+
+#include "shell/shell_partition.hpp"
+
+#include "core/errors.hpp"
+#include "core/fixed_chunks.hpp"
+#include "neighbours/cell_grid.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <string>
+
+namespace cmp::shell {
+
+VertexFaceContacts::VertexFaceContacts(const mesh::TriMesh& rest, const ContactParameters& p)
+    : delta_(p.contact_distance), estar_(p.vertex_effective_modulus()), rstar_(0.5 * p.contact_distance) {
+  validate(p, "hertz-faces");
+  check_face_indices(rest, "hertz-faces");
+  const int n = static_cast<int>(rest.V.rows());
+  ShellPartition part = shell_partition(rest.F, n);
+  shell_of_ = std::move(part.vertex_shell);
+  face_shell_ = std::move(part.face_shell);
+  const int nf = static_cast<int>(rest.F.rows());
+  faces_.resize(3 * static_cast<std::size_t>(nf));
+  incident_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      faces_[3 * f + k] = rest.F(f, k);
+      ++incident_start_[rest.F(f, k) + 1];
+    }
+  for (int v = 0; v < n; ++v) incident_start_[v + 1] += incident_start_[v];
+  incident_.resize(faces_.size());
+  std::vector<int> next(incident_start_.begin(), incident_start_.end() - 1);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) incident_[next[faces_[3 * f + k]]++] = f;  // ascending faces per vertex
+  if (p.box) set_box(*p.box, p.box_periodic);
+}
+
+void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) {
+  for (int a = 0; a < 3; ++a) {
+    if (!(lengths[a] > 0) || !std::isfinite(lengths[a]))
+      throw UsageError("hertz-faces: box side " + std::to_string(lengths[a]) + " is not positive and finite");
+    if (periodic[a] && !(lengths[a] >= 4.0 * delta_))
+      throw UsageError("hertz-faces: the periodic box side " + std::to_string(lengths[a]) +
+                       " is shorter than 4 contact distances (" + std::to_string(4.0 * delta_) + ")");
+  }
+  box_ = BoxSides{lengths, periodic};
+}
+
+void VertexFaceContacts::collect(std::span<const double> x) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
+  scratch_.resize(n, 3);
+  std::copy(x.begin(), x.end(), scratch_.data());
+  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  records_.resize(static_cast<std::size_t>(chunks));
+  for (auto& r : records_) r.clear();
+  if (n == 0 || faces_.empty()) return;
+
+  // The longest edge now (minimum image: a shell may straddle a periodic face).
+  double periods[3], inverse[3];
+  for (int a = 0; a < 3; ++a) {
+    const bool wraps = box_ && box_->periodic[a];
+    periods[a] = wraps ? box_->lengths[a] : 0.0;
+    inverse[a] = wraps ? 1.0 / box_->lengths[a] : 0.0;
+  }
+  const double* X = scratch_.data();
+  const auto image = [&](const double* to, const double* from, double out[3]) {
+    for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(to[a] - from[a], periods[a], inverse[a]);
+  };
+  // Every point of a triangle lies within (its longest edge)/sqrt(3) of its nearest corner
+  // (the circumradius of an acute triangle, at most half the longest edge otherwise): a
+  // triangle within delta of p has a corner within delta + that. reach_ holds, per vertex,
+  // the largest such bound over its triangles.
+  reach_.assign(static_cast<std::size_t>(n), 0.0);
+  double longest2 = 0;
+  for (std::size_t f = 0; f < faces_.size(); f += 3) {
+    double face2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      double e[3];
+      image(X + 3 * faces_[f + k], X + 3 * faces_[f + (k + 1) % 3], e);
+      face2 = std::max(face2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    }
+    for (int k = 0; k < 3; ++k) reach_[faces_[f + k]] = std::max(reach_[faces_[f + k]], face2);
+    longest2 = std::max(longest2, face2);
+  }
+  const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
+  for (double& r : reach_) r = delta_ + std::sqrt(r * third);
+  const double longest = std::sqrt(longest2), cutoff = delta_ + std::sqrt(longest2 * third);
+  if (box_)
+    for (int a = 0; a < 3; ++a)
+      if (box_->periodic[a] && !(box_->lengths[a] >= 2.0 * (cutoff + longest)))
+        throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
+                               " is under 2 (delta + 1.58 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
+  // Vertex pairs of different shells within the cutoff (one pass over the cells, on one
+  // thread), kept in the direction(s) i -> j where x_i is within j's reach, then each vertex's
+  // partners in pair order (CSR).
+  const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
+  pairs_.clear();
+  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double r2) {
+    if (shell_of_[i] == shell_of_[j]) return;
+    if (r2 < reach_[j] * reach_[j]) pairs_.insert(pairs_.end(), {i, j});
+    if (r2 < reach_[i] * reach_[i]) pairs_.insert(pairs_.end(), {j, i});
+  });
+  partner_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) ++partner_start_[pairs_[k] + 1];
+  for (Eigen::Index v = 0; v < n; ++v) partner_start_[v + 1] += partner_start_[v];
+  partners_.resize(pairs_.size() / 2);
+  partner_next_.assign(partner_start_.begin(), partner_start_.end() - 1);
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) partners_[partner_next_[pairs_[k]]++] = pairs_[k + 1];
+
+  // Faces already tried for the current vertex, per thread: key generation * n + vertex.
+  const int threads = std::max(1, omp_get_max_threads());
+  if (static_cast<int>(stamps_.size()) < threads) stamps_.resize(static_cast<std::size_t>(threads));
+  const long long base = ++generation_ * static_cast<long long>(n);
+  const double delta2 = delta_ * delta_;
+
+  std::atomic<bool> crowded{false};
+  for_each_chunk(chunks, [&](int c) {
+    std::vector<long long>& stamp = stamps_[static_cast<std::size_t>(omp_get_thread_num())];
+    if (stamp.size() != faces_.size() / 3) stamp.assign(faces_.size() / 3, -1);
+    std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
+    struct Best {
+      int shell, face;
+      double d2;
+      Eigen::Vector3d w, q;
+    };
+    Best best[8];
+    for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
+      const int si = shell_of_[i];
+      if (si < 0 || partner_start_[i] == partner_start_[i + 1]) continue;
+      const long long key = base + i;
+      const double* p = X + 3 * i;
+      int found = 0;
+      for (int t = partner_start_[i]; t < partner_start_[i + 1]; ++t) {
+        const int j = partners_[t];
+        for (int s = incident_start_[j]; s < incident_start_[j + 1]; ++s) {
+          const int f = incident_[s];
+          if (stamp[f] == key) continue;
+          stamp[f] = key;
+          // The corners relative to p, each in its minimum image.
+          Eigen::Vector3d corner[3];
+          for (int k = 0; k < 3; ++k) image(X + 3 * faces_[3 * f + k], p, corner[k].data());
+          const Eigen::Vector3d w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
+          const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+          const double d2 = q.squaredNorm();
+          if (!(d2 < delta2)) continue;
+          const int sf = face_shell_[f];
+          int b = 0;
+          while (b < found && best[b].shell != sf) ++b;
+          if (b == found) {
+            if (found == 8) {  // no exception may leave a parallel region: reported below
+              crowded = true;
+              continue;
+            }
+            best[found++] = {sf, f, d2, w, q};
+          } else if (d2 < best[b].d2) {
+            best[b] = {sf, f, d2, w, q};
+          }
+        }
+      }
+      for (int b = 0; b < found; ++b) {
+        const Best& k = best[b];
+        out.push_back({static_cast<int>(i), k.face, {k.w[0], k.w[1], k.w[2]}, {-k.q[0], -k.q[1], -k.q[2]}, std::sqrt(k.d2)});
+      }
+    }
+  });
+  if (crowded) throw ComputationError("hertz-faces: a vertex within reach of more than 8 other shells");
+}
+
+double VertexFaceContacts::energy(std::span<const double> x) const {
+  check_sizes(x);
+  collect(x);
+  double total = 0;
+  for (const auto& chunk : records_) {
+    double sum = 0;
+    for (const Record& r : chunk) sum += hertz_energy(delta_ - r.r, estar_, rstar_);
+    total += sum;
+  }
+  return total;
+}
+
+void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<double> g) const {
+  check_sizes(x, g);
+  collect(x);
+  double* G = g.data();
+  for (const auto& chunk : records_)
+    for (const Record& r : chunk) {
+      if (!(r.r > 0)) continue;  // p on the triangle: no direction (a set of measure zero)
+      // dU/dp = -U'(h) d/r; each corner k takes -w_k dU/dp.
+      const double s = -hertz_force(delta_ - r.r, estar_, rstar_) / r.r;
+      const int* corner = faces_.data() + 3 * r.face;
+      for (int a = 0; a < 3; ++a) {
+        const double gp = s * r.d[a];
+        G[3 * r.i + a] += gp;
+        for (int k = 0; k < 3; ++k) G[3 * corner[k] + a] -= r.w[k] * gp;
+      }
+    }
+}
+
+std::vector<VertexFaceContacts::Contact> VertexFaceContacts::contacts(std::span<const double> x) const {
+  check_sizes(x);
+  collect(x);
+  std::vector<Contact> out;
+  for (const auto& chunk : records_)
+    for (const Record& r : chunk) {
+      const int* corner = faces_.data() + 3 * r.face;
+      const int k = static_cast<int>(std::max_element(r.w, r.w + 3) - r.w);
+      const double h = delta_ - r.r;
+      out.push_back({r.i, corner[k], Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(h, estar_, rstar_),
+                     r.face, Eigen::Vector3d(r.w[0], r.w[1], r.w[2])});
+    }
+  return out;
+}
+
+std::vector<char> VertexFaceContacts::touching(std::span<const double> x) const {
+  check_sizes(x);
+  collect(x);
+  std::vector<char> t(shell_of_.size(), 0);
+  for (const auto& chunk : records_)
+    for (const Record& r : chunk) {
+      t[r.i] = 1;
+      for (int k = 0; k < 3; ++k)
+        if (r.w[k] > 0) t[faces_[3 * r.face + k]] = 1;
+    }
+  return t;
+}
+
+}  // namespace cmp::shell

@@ -1,0 +1,148 @@
+#pragma once
+// Hertz contacts of shells through their surfaces ("hertz-faces"): every vertex p of a shell A
+// is pushed out of a layer of thickness delta (the contact distance) around every other shell
+// B's triangulated surface.
+//
+//   d     = min over B's triangles T near p of |p - q_T|, q_T the closest point of T to p
+//           (minimum image in a periodic box); one contact per (vertex, other shell) pair
+//   h     = delta - d > 0
+//   U     = (8/15) E* sqrt(R*) h^(5/2),   E* = E / (2 (1 - nu^2)) (as for vertex spheres),
+//           R* = delta / 2 (a sphere of radius delta/2 on a plate: the plate's curvature is
+//           the shell's, far below 1/delta)
+//   force -U'(h) (p - q)/d on p, and its opposite on the closest triangle's corners, split
+//           by the barycentric weights of q: the exact gradient of U (q minimises the distance,
+//           so its own motion drops out). Where the closest triangle changes across a shared
+//           edge or corner, q and its weights agree on both sides: U is C1 there.
+// Both ordered pairs count (A's vertices against B's faces and B's vertices against A's), so a
+// vertex can no longer slip between another shell's vertex spheres: the barrier covers every
+// point of the surface, and delta can be the wall thickness t (two walls touching have their
+// mid-surfaces t apart) instead of vertex spheres sized to the triangles.
+//
+// Candidates come from linked cells (lib/neighbours) over the vertices, cut off at
+// delta + (the longest current edge)/sqrt(3) (every point of a triangle lies within its
+// longest edge/sqrt(3) of a corner, so a triangle within delta of p has a corner within that):
+// the pairs of vertices of different shells (one pass, one thread), each kept towards the
+// vertex whose own triangles can reach the other, then for each vertex the triangles incident
+// to its partners. The box is the vertices'
+// bounding box, or, once set_box() gave one, [0, L) with the minimum image along its periodic
+// axes: the interface of VertexContacts, so a packing run can take either style. Vertices are
+// handled in fixed chunks on all threads; energies are summed per chunk in chunk order and the
+// forces added on one thread in chunk order: the same bits for any thread count.
+#include "shell/energy_term.hpp"
+#include "shell/hertz_contacts.hpp"
+#include "shell/shell_parameters.hpp"
+
+#include "mesh/tri_mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace cmp::shell {
+
+// Barycentric weights (w_a, w_b, w_c), each in [0, 1] and summing to 1, of the point of the
+// triangle (a, b, c) closest to p (Voronoi regions of corners, edges and the interior, as in
+// Ericson, "Real-Time Collision Detection" 5.1.5). A degenerate triangle gives a closest point
+// on its edges.
+inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                                const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
+class VertexFaceContacts final : public EnergyTerm {
+ public:
+  // Throws cmp::UsageError for bad parameters (contact_distance among them) or a face index
+  // outside the mesh.
+  VertexFaceContacts(const mesh::TriMesh& rest, const ContactParameters& p);
+  std::string name() const override { return "hertz-faces"; }
+  double energy(std::span<const double> x) const override;
+  void add_gradient(std::span<const double> x, std::span<double> g) const override;
+  long vertex_count() const override { return static_cast<long>(shell_of_.size()); }
+
+  // As VertexContacts::set_box: the box [0, L), periodic along the flagged axes. Throws
+  // cmp::UsageError for a side that is not positive and finite or a periodic side shorter than
+  // 4 delta. At each call, a periodic side must also be at least 2 (delta + (1 + 1/sqrt 3) L),
+  // L the longest edge
+  // (cmp::ComputationError otherwise).
+  using BoxSides = VertexContacts::BoxSides;
+  void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic);
+  void clear_box() { box_.reset(); }
+  const std::optional<BoxSides>& box() const { return box_; }
+
+  // One contact: vertex i against the closest triangle `face` of another shell. d = p - q
+  // (minimum image; q = sum_k weights[k] x_{F(face, k)}, taken in p's image), r = |d|, the
+  // overlap h = delta - r > 0 and the repulsive force magnitude along d (on p; the triangle's
+  // corners take -force d/r split by the weights). j is the corner of the face with the
+  // largest weight, so that (i, j, d, r, force) reads as for vertex spheres; the exact lever
+  // arm for a virial is q = x_j + (q - x_j), not x_j.
+  struct Contact {
+    int i, j;
+    Eigen::Vector3d d;
+    double r, overlap, force;
+    int face;
+    Eigen::Vector3d weights;
+  };
+  // Every contact at x, vertex by vertex (ascending), shells of each vertex in the order met.
+  std::vector<Contact> contacts(std::span<const double> x) const;
+  // 1 for every vertex in a contact at x: the pushed vertex and the corners of the triangle
+  // with a positive weight.
+  std::vector<char> touching(std::span<const double> x) const;
+  const std::vector<int>& vertex_shells() const { return shell_of_; }
+  const std::vector<int>& face_shells() const { return face_shell_; }
+  double contact_distance() const { return delta_; }
+
+  static constexpr long kChunkVertices = 2048;
+
+ private:
+  struct Record {
+    int i, face;
+    double w[3], d[3], r;
+  };
+  // Fills records_ (one list per fixed chunk of vertices) with every contact at x.
+  void collect(std::span<const double> x) const;
+
+  std::vector<int> shell_of_, face_shell_, faces_;  // faces_: 3 corners per face
+  std::vector<int> incident_start_, incident_;      // faces around each vertex (CSR)
+  double delta_, estar_, rstar_;
+  std::optional<BoxSides> box_;
+  mutable mesh::VertexMatrix scratch_;
+  mutable std::vector<int> pairs_, partner_start_, partners_, partner_next_;  // vertex pairs, per vertex (CSR)
+  mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
+  mutable std::vector<std::vector<Record>> records_;
+  mutable std::vector<std::vector<long long>> stamps_;  // per thread, per face: the last key that tried it
+  mutable long long generation_ = 0;                   // calls of collect(): key = generation * #V + vertex
+};
+
+inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                                const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double s = va + vb + vc;
+  if (!(s > 0)) return {1, 0, 0};  // degenerate (zero area) and not caught above
+  const double v = vb / s, w = vc / s;
+  return {1 - v - w, v, w};
+}
+
+}  // namespace cmp::shell
