@@ -11,17 +11,11 @@ shellpack="$bin/shellpack"
 rndmesh="$bin/rndmesh"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=shellpack
+source "$(dirname "${BASH_SOURCE[0]}")/../support/compress_start.sh"
 enter_scratch_dir
 
-# The start: a jammed packing of 16 spheres and an icosahedral cell of 162 vertices.
-make_start() {
-  "$shellpack" jam -N 16 --seed 3 -o jammed.xyz -q >/dev/null || fail "jam"
-  "$rndmesh" icosa --level 3 -o cell.off -q || fail "rndmesh"
-}
 # Coarse steps and a looser force tolerance keep each run to seconds.
 compress() { "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 -q "$@"; }
-col() { awk -F, -v c="$2" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == c) k = i; h = 1; next } { print $k }' "$1"; }
-key() { sed -n "s/^# $2=//p" "$1"; }
 # bad_start PACKING MESH PATTERN: the run is refused before any work, exit 2.
 bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0.7 -o out.off; }
 

@@ -12,16 +12,11 @@ shellpack="$bin/shellpack"
 rndmesh="$bin/rndmesh"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=shellpack
+source "$(dirname "${BASH_SOURCE[0]}")/../support/compress_start.sh"
 enter_scratch_dir
 
-make_start() {
-  "$shellpack" jam -N 16 --seed 3 -o jammed.xyz -q >/dev/null || fail "jam"
-  "$rndmesh" icosa --level 3 -o cell.off -q || fail "rndmesh"
-}
 # Coarse steps and a looser force tolerance keep each run to seconds.
 walls() { "$shellpack" compress "${at:-.}/jammed.xyz" --mesh "${at:-.}/cell.off" --walls --step 0.1 --ftol 1e-4 -q "$@"; }
-col() { awk -F, -v c="$2" '/^#/ { next } !h { for (i = 1; i <= NF; i++) if ($i == c) k = i; h = 1; next } { print $k }' "$1"; }
-key() { sed -n "s/^# $2=//p" "$1"; }
 # row CSV PHI COLUMN: the value of COLUMN in the row at phi PHI.
 row() { paste -d, <(col "$1" phi) <(col "$1" "$3") | awk -F, -v p="$2" '$1 == p { print $2 }'; }
 
