@@ -81,7 +81,7 @@ jamming-figure: deps all
 shell-figures: deps all
 	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
 
-# Figs 4.3-4.6 at N = 32: shellpack jam -> compress -> analyze -> kcfit (COMPRESS_N, COMPRESS_LEVEL; $(OUT)/figures/).
+# Figs 4.3-4.6 at N = 32, 50: shellpack jam -> compress -> analyze -> kcfit (COMPRESS_N, COMPRESS_LEVEL; $(OUT)/figures/).
 compress-figures: deps all
 	@scripts/compress_figures.sh $(BUILD) $(OUT)/figures
 

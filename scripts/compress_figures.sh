@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # make compress-figures: Figs 4.3-4.6 of the thesis at a size this machine affords, the chain
 # shellpack jam -> shellpack compress -> shellpack analyze -> kcfit, no reshaping of tables.
-# For each N in COMPRESS_N (default "32"): one jammed packing (seed COMPRESS_SEED, 1), one
+# For each N in COMPRESS_N (default "32 50"): one jammed packing (seed COMPRESS_SEED, 1), one
 # icosahedral cell of COMPRESS_LEVEL (4: 642 vertices; 5: 2562, the thesis's size), the
 # shells compressed from jamming to dphi = 0.3 with packings written at the dphi of Fig. 4.3a;
 # shellpack analyze reads the packings; kcfit fits dZ = C (phi - phi_c)^beta up to
 # dphi = 0.15 (the thesis's power-law range) and the shape law delta_eps = C dphi^e.
 # Writes $out/compress/N<N>/{compress.csv,structure.csv,rdf.csv,dz_fit.csv,shape_fit.csv} and
-# $out/shell_compress.png. N = 32 at 642 vertices: about 10 minutes on 2 cores.
+# $out/shell_compress.png. N = 32 and 50 at 642 vertices: about 15 minutes on 2 cores.
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
-sizes=${COMPRESS_N:-32}
+sizes=${COMPRESS_N:-32 50}
 level=${COMPRESS_LEVEL:-4}
 seed=${COMPRESS_SEED:-1}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
