@@ -26,7 +26,13 @@ namespace {
 constexpr const char* kMagic = "shellpack compress checkpoint 1";
 constexpr const char* kWhat = "a shellpack compress checkpoint";
 
-double round12(double v) { return std::stod(fmt::format("{:.12g}", v)); }
+// v rounded to 12 significant digits (the targets as a user reads them back), through the
+// strict parser like every other number.
+double round12(double v) {
+  double out = v;
+  io::try_parse_double(fmt::format("{:.12g}", v), out);
+  return out;
+}
 
 double parse_one(const std::string& text) {
   double v = 0;
