@@ -115,7 +115,7 @@ void contacts(int level) {
     const double ts = per_call([&] { spheres.add_gradient(x, g); });
     const double tf = per_call([&] { faces.add_gradient(x, g); });
     std::printf("gradient_hertz_vertices_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * ts / n,
-                spheres.contacts(x).size());
+                spheres.touches(x).size());
     std::printf("gradient_hertz_faces_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * tf / n,
                 faces.contacts(x).size());
   }

@@ -125,10 +125,13 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   m.contact.vertex_radius = job.vertex_radius > 0
                                 ? job.vertex_radius
                                 : default_vertex_radius(m.material.thickness, shell::max_circumradius(cell) * largest);
+  m.contact.contact_distance = job.contact_distance > 0 ? job.contact_distance : m.material.thickness;
   shell::ShellModel inflate = m;
   inflate.load.turgor = o.turgor0;
   const double rest_diameter = shell::rest_diameter_for_inflated(cell, inflate, o.relax);
-  shell::Compression run(shell::place_shells(spheres, cell, rest_diameter, 2.0 * m.contact.vertex_radius, job.seed), o);
+  // The jammed spheres become the shells' envelopes: the shells, this far apart, start free of contact.
+  const double reach = m.shell_contact_style == "hertz-faces" ? m.contact.contact_distance : 2.0 * m.contact.vertex_radius;
+  shell::Compression run(shell::place_shells(spheres, cell, rest_diameter, reach, job.seed), o);
   const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
 
   Fingerprint fp;
@@ -139,6 +142,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   fp.add(cell.F.data(), sizeof(int) * static_cast<std::size_t>(cell.F.size()));
   fp.add(job.seed);
   fp.add(m.contact.vertex_radius);
+  if (m.shell_contact_style == "hertz-faces") fp.add(m.contact.contact_distance);
   if (o.walls) {
     fp.add(o.phi_start);
     fp.add(m.contact.wall_modulus);
@@ -317,6 +321,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                             "nu=" + io::format_number(m.material.poisson_ratio),
                                             "thickness=" + io::format_number(m.material.thickness),
                                             "vertex_radius=" + io::format_number(m.contact.vertex_radius),
+                                            "contact=" + m.shell_contact_style,
                                             "P0=" + io::format_number(o.turgor0),
                                             "bending=" + (m.bending.empty() ? std::string("none") : m.bending),
                                             "stretching=" + m.stretching,
@@ -324,6 +329,8 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                             "step=" + std::to_string(run.step_index()),
                                             "turgor=" + join(p->turgors()),
                                             "volume0=" + join(p->target_volumes())};
+    if (m.shell_contact_style == "hertz-faces")
+      comments.push_back("contact_distance=" + io::format_number(m.contact.contact_distance));
     if (o.walls) comments.push_back("walls=" + wall_name);
     mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
     io::write_off(replace_phi(job.output_pattern, io::format_number(phi)), V, s.rest().F, comments, &info);

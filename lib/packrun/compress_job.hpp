@@ -33,10 +33,11 @@ struct CompressJob {
   long stop_after_steps = 0;       // stop (checkpoint, table so far) after this many box steps of this process; 0 never
   std::uint64_t seed = 1;          // rotations of the shells
   double vertex_radius = 0;        // R_v [D_0]; 0: default_vertex_radius
+  double contact_distance = 0;     // hertz-faces: delta [D_0]; 0: the thickness t
   bool check_penetration = true;   // point-in-mesh check after every step
   bool timings = false;            // `seconds` column
   bool quiet = false;
-  shell::CompressionOptions run;   // model (material in units of E, t in D_0), Pi_0, step, targets, relax
+  shell::CompressionOptions run;   // model (material in units of E, t in D_0, shell_contact_style), Pi_0, step, targets, relax
 };
 
 // "a:b:c" (start:stop:step, inclusive) or "a,b,..." as ascending targets in (0, 1], each

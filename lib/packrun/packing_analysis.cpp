@@ -75,33 +75,42 @@ PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions&
   if (a.turgor.empty()) warn("no turgor= line: the turgor columns are left empty");
   else if (!a.p0) warn("no P0= line (or --p0): turgor_mean_P0 is left empty");
 
-  // Contacts need R_v (vertex_radius=, else the wall thickness, as shellpack shell's default),
-  // forces E and nu too.
+  // Contacts follow the law the packing was made with (contact=, else hertz-vertices), with
+  // its length: R_v (vertex_radius=, else the wall thickness, as shellpack shell's default)
+  // or delta (contact_distance=, else the thickness); forces need E and nu too. The walls
+  // always take R_v.
   shell::ContactParameters cp;
+  a.contact = o.contact ? *o.contact : k.contact ? *k.contact : "hertz-vertices";
+  const bool faces = a.contact == "hertz-faces";
   const auto rv = o.vertex_radius ? o.vertex_radius : k.vertex_radius ? k.vertex_radius : k.thickness;
+  const auto delta = o.contact_distance ? o.contact_distance : k.contact_distance ? k.contact_distance : k.thickness;
+  const auto reach = faces ? delta : rv;
   const auto E = o.youngs_modulus ? o.youngs_modulus : k.youngs_modulus;
   if (o.poisson_ratio || k.poisson_ratio) cp.poisson_ratio = o.poisson_ratio ? *o.poisson_ratio : *k.poisson_ratio;
   cp.wall_modulus = o.wall_modulus;
   cp.wall_poisson_ratio = o.wall_poisson_ratio;
-  if (rv) {
-    cp.vertex_radius = *rv;
-    cp.youngs_modulus = E ? *E : 1.0;  // contacts and Z do not depend on it
+  if (rv) cp.vertex_radius = *rv;
+  if (delta) cp.contact_distance = *delta;
+  cp.youngs_modulus = E ? *E : 1.0;  // contacts and Z do not depend on it
+  if (reach) {
     neighbours::Box box;
     box.lengths = p.box;
     box.periodic = p.periodic;
     try {
-      a.contacts = shell::shell_contacts(p.V, p.F, p.offsets, box, cp);
-    } catch (const UsageError& e) {  // R_v too large for the box: a problem of this file
-      throw InputError(p.file, 0, fmt::format("R_v = {}: {}", cp.vertex_radius, e.what()));
+      a.contacts = shell::shell_contacts(p.V, p.F, p.offsets, box, cp, a.contact);
+    } catch (const UsageError& e) {  // the reach too large for the box: a problem of this file
+      throw InputError(p.file, 0, fmt::format("{} = {}: {}", faces ? "delta" : "R_v", *reach, e.what()));
     }
     a.contacts_per_shell = shell::contacts_per_shell(a.contacts, a.particles);
     a.has_contacts = true;
     a.has_forces = E.has_value();
   }
+  const std::string missing_key = faces ? "no contact_distance= or thickness= line" : "no vertex_radius= or thickness= line";
+  const std::string flag = faces ? "--contact-distance" : "--vertex-radius";
   const bool walled = !all_periodic(p.periodic);
-  if (!rv) {
-    if (o.require_contacts) throw InputError(p.file, 0, "no vertex_radius= or thickness= line: give --vertex-radius for --contacts");
-    warn("no vertex_radius= or thickness= line (or --vertex-radius): contacts, Z, forces and walls are left empty");
+  if (!reach) {
+    if (o.require_contacts) throw InputError(p.file, 0, missing_key + ": give " + flag + " for --contacts");
+    warn(missing_key + " (or " + flag + "): contacts, Z, forces and walls are left empty");
   } else if (!E) {
     if (o.require_contacts) throw InputError(p.file, 0, "no E= line: give --youngs-modulus for the forces of --contacts");
     warn(std::string("no E= line (or --youngs-modulus): the force columns") + (walled ? " and the wall load" : "") +

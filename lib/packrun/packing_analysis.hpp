@@ -20,7 +20,8 @@ namespace cmp::packrun {
 
 struct AnalyzeOptions {
   // Overrides of the file's values (unset: the file's).
-  std::optional<double> youngs_modulus, poisson_ratio, vertex_radius, d0, p0;
+  std::optional<double> youngs_modulus, poisson_ratio, vertex_radius, contact_distance, d0, p0;
+  std::optional<std::string> contact;  // hertz-vertices or hertz-faces
   double wall_modulus = std::numeric_limits<double>::infinity();  // E_w [pressure]; rigid by default
   double wall_poisson_ratio = 0.5;
   double bin_width = 0.01;  // g(r) bin [D0]
@@ -42,7 +43,8 @@ struct PackingAnalysis {
   std::vector<shell::ShellShape> shapes;    // per shell
   std::vector<double> turgor;               // per shell (empty: unknown)
   std::optional<double> p0;
-  bool has_contacts = false;                // R_v known
+  bool has_contacts = false;                // the contact law known (R_v, or delta for hertz-faces)
+  std::string contact;                      // its style
   std::vector<shell::ShellContact> contacts;  // both directions (m, n) and (n, m)
   std::vector<int> contacts_per_shell;
   bool has_forces = false;                  // E, nu known too

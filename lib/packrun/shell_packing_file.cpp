@@ -74,7 +74,13 @@ PackingKeys parse_packing_keys(const std::vector<std::string>& comments, const s
     else if (key == "P0") k.p0 = number(key, value, Range::positive, path, line);
     else if (key == "turgor") k.turgor = numbers(key, value, false, shells, path, line);
     else if (key == "volume0") k.volume0 = numbers(key, value, true, shells, path, line);
-    else if (key == "bending") {
+    else if (key == "contact_distance") k.contact_distance = number(key, value, Range::positive, path, line);
+    else if (key == "contact") {
+      const auto t = tokens(value);
+      if (t.size() != 1 || (t[0] != "hertz-vertices" && t[0] != "hertz-faces"))
+        throw InputError(path, line, "contact= needs hertz-vertices or hertz-faces");
+      k.contact = t[0];
+    } else if (key == "bending") {
       const auto t = tokens(value);
       if (t.size() != 1) throw InputError(path, line, "bending= needs one style name (or none)");
       k.bending = t[0];

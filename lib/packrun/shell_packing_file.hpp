@@ -4,6 +4,7 @@
 // `# key=value` lines `shellpack compress` writes beside the packing lines:
 //   # phi=0.85  # E=1  # nu=0.5  # thickness=0.02  # vertex_radius=0.02  # P0=0.0025
 //   # bending=none  # turgor=Pi_1 ... Pi_K  # volume0=V0_1 ... V0_K  # D0=1
+//   # contact=hertz-faces  # contact_distance=0.02
 // (D0= is read with the packing, as percolate reads it.) Other comment lines (provenance,
 // free text) are ignored.
 #include "mesh/tri_mesh.hpp"
@@ -24,6 +25,8 @@ struct PackingKeys {
   std::optional<double> poisson_ratio;   // nu, in (-1, 0.5]
   std::optional<double> thickness;       // t [length], > 0
   std::optional<double> vertex_radius;   // R_v [length], > 0
+  std::optional<std::string> contact;    // the contact style between shells (hertz-vertices, hertz-faces)
+  std::optional<double> contact_distance;  // hertz-faces: delta [length], > 0
   std::optional<double> p0;              // initial turgor P0 [pressure], > 0
   std::optional<std::string> bending;    // bending style or "none"
   std::vector<double> turgor;            // Pi of each shell [pressure] (K values or none)

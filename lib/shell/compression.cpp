@@ -123,7 +123,9 @@ void Compression::open_box() {
 }
 
 double Compression::free_advance() const {
-  const double rv = options_.model.contact.vertex_radius;
+  // A shell reaches R_v beyond its vertices towards a wall, half the contact reach towards
+  // another shell.
+  const double rv = std::max(options_.model.contact.vertex_radius, 0.5 * system_.contacts()->contact_reach());
   const auto c = centroids();
   const std::size_t n = c.size();
   // Bounding spheres of the vertex spheres about each centroid.
@@ -256,14 +258,15 @@ CompressionRow Compression::observe() const {
   const std::vector<Eigen::Vector3d> centre = centroids();
   const auto& shell_of = system_.contacts()->vertex_shells();
   // Contacts: touching shell pairs, and the virial sum_contacts F_ij . (c_I - c_J), with the
-  // centres' separation taken through the contact's own image: d_ij - (x_i - c_I) + (x_j - c_J).
+  // centres' separation taken through the contact's own image: d - (x_i - c_I) + (q - c_J),
+  // q the pushing point (a vertex, or the closest point of a triangle) in J's own frame.
   std::vector<char> touch(static_cast<std::size_t>(n) * n, 0);
   double virial = 0;
-  for (const auto& c : system_.contacts()->contacts(span_of(x))) {
-    const int I = shell_of[c.i], J = shell_of[c.j];
+  for (const auto& c : system_.contacts()->touches(span_of(x))) {
+    const int I = shell_of[c.i], J = shell_of[c.corners[0]];
     touch[static_cast<std::size_t>(I) * n + J] = touch[static_cast<std::size_t>(J) * n + I] = 1;
-    const Eigen::Vector3d R = c.d - (x.segment<3>(3 * c.i) - centre[I]) + (x.segment<3>(3 * c.j) - centre[J]);
-    virial += c.force * c.d.dot(R) / c.r;
+    const Eigen::Vector3d R = c.d - (x.segment<3>(3 * c.i) - centre[I]) + (touch_point(c, span_of(x)) - centre[J]);
+    if (c.r > 0) virial += c.force * c.d.dot(R) / c.r;
   }
   for (int I = 0; I < n; ++I)
     for (int J = I + 1; J < n; ++J) row.contacts += touch[static_cast<std::size_t>(I) * n + J];

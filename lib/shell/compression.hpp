@@ -10,7 +10,9 @@
 //
 // Observables per step (one CompressionRow): the box pressure from the contact virial, the
 // turgor statistics, the contact number Z (the mean number of other shells a shell touches: two
-// shells touch when any of their vertex spheres overlap), the shape of each shell (gyration
+// shells touch when the contact style finds any contact between them: overlapping vertex
+// spheres for hertz-vertices, a vertex within delta of the other's surface for hertz-faces),
+// the shape of each shell (gyration
 // tensor of its vertices, Eq. 4.6), each term's energy and the relaxation's figures.
 //
 // The shells are kept whole (unwrapped); after each step a shell whose vertex centroid left
@@ -40,7 +42,7 @@
 namespace cmp::shell {
 
 struct CompressionOptions {
-  ShellModel model;            // pressure "volume" or "turgor"; contact.vertex_radius set; shell_contacts on
+  ShellModel model;            // pressure "volume" or "turgor"; shell_contact_style and its contact parameters set
   double turgor0 = 0.0025;     // Pi_0 [the unit of E] (the thesis: Pi_0 / E = 0.0025)
   double step = 0.004;         // largest box side change per step [D_0]
   std::vector<double> targets; // target phi, ascending

@@ -21,7 +21,7 @@ void check_face_indices(const mesh::TriMesh& rest, const char* style) {
 }
 
 neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
-                            const std::optional<VertexContacts::BoxSides>& sides, const char* style) {
+                            const std::optional<ShellContactTerm::BoxSides>& sides, const char* style) {
   neighbours::Box box;
   box.lower = X.colwise().minCoeff().transpose().array() - cutoff;
   box.lengths = (X.colwise().maxCoeff().transpose() - box.lower).array() + cutoff;
@@ -38,7 +38,7 @@ neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
 }
 
 neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
-                                  const std::optional<VertexContacts::BoxSides>& sides, const char* style) {
+                                  const std::optional<ShellContactTerm::BoxSides>& sides, const char* style) {
   const neighbours::Box box = contact_box(X, cutoff, sides, style);
   Eigen::Vector3i cells = Eigen::Vector3i::Zero();
   if (sides) {
@@ -156,12 +156,12 @@ void VertexContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool, 3>
   list_valid_ = false;
 }
 
-std::vector<VertexContacts::Contact> VertexContacts::contacts(std::span<const double> x) const {
+std::vector<ShellContactTerm::Touch> VertexContacts::touches(std::span<const double> x) const {
   check_sizes(x);
-  std::vector<Contact> out;
+  std::vector<Touch> out;
   for_each_contact(x, [&](int i, int j, const Eigen::Vector3d& d, double r) {
     const double h = 2.0 * radius_ - r;
-    out.push_back({i, j, d, r, h, hertz_force(h, estar_, 0.5 * radius_)});
+    out.push_back({i, {j, -1, -1}, Eigen::Vector3d::UnitX(), d, r, h, hertz_force(h, estar_, 0.5 * radius_)});
   });
   return out;
 }

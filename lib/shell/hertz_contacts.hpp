@@ -13,6 +13,7 @@
 //   WallContacts    every vertex sphere against rigid planes (walls that may move between
 //                   relaxations: set_walls).
 #include "shell/energy_term.hpp"
+#include "shell/shell_contact_term.hpp"
 #include "shell/shell_parameters.hpp"
 
 #include "mesh/tri_mesh.hpp"
@@ -32,7 +33,7 @@ namespace cmp::shell {
 inline double hertz_energy(double h, double effective_modulus, double effective_radius);
 inline double hertz_force(double h, double effective_modulus, double effective_radius);
 
-class VertexContacts final : public EnergyTerm {
+class VertexContacts final : public ShellContactTerm {
  public:
   // Throws cmp::UsageError for bad parameters or a face index outside the mesh.
   VertexContacts(const mesh::TriMesh& rest, const ContactParameters& p);
@@ -41,33 +42,23 @@ class VertexContacts final : public EnergyTerm {
   void add_gradient(std::span<const double> x, std::span<double> g) const override;
   long vertex_count() const override { return static_cast<long>(shell_of_.size()); }
   // 1 for every vertex overlapping a vertex of another shell at x.
-  std::vector<char> touching(std::span<const double> x) const;
+  std::vector<char> touching(std::span<const double> x) const override;
 
-  // The box [0, L) the vertices live in, periodic along the flagged axes (minimum image), or
-  // none (the default: open space). May change between relaxations (a box being
-  // compressed). Throws cmp::UsageError for a side that is not positive and finite or a
-  // periodic side shorter than 5 R_v (twice the Verlet list's reach).
-  void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic);
-  void clear_box() {
+  // Throws cmp::UsageError for a side that is not positive and finite or a periodic side
+  // shorter than 5 R_v (twice the Verlet list's reach).
+  void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) override;
+  void clear_box() override {
     box_.reset();
     list_valid_ = false;
   }
-  struct BoxSides {
-    Eigen::Vector3d lengths;
-    std::array<bool, 3> periodic;
-  };
-  const std::optional<BoxSides>& box() const { return box_; }
+  const std::optional<BoxSides>& box() const override { return box_; }
 
-  // One overlapping pair of vertices of different shells: d = x_i - x_j (minimum image),
-  // r = |d|, the overlap h = 2 R_v - r > 0 and the repulsive force magnitude along d.
-  struct Contact {
-    int i, j;
-    Eigen::Vector3d d;
-    double r, overlap, force;
-  };
-  // Every overlapping pair at x, in the fixed order of the pair loop.
-  std::vector<Contact> contacts(std::span<const double> x) const;
-  const std::vector<int>& vertex_shells() const { return shell_of_; }
+  // Every overlapping pair of vertices of different shells at x, in the fixed order of the
+  // pair loop: vertex i pushed by vertex j (corners {j, -1, -1}), d = x_i - x_j (minimum
+  // image), the overlap h = 2 R_v - r.
+  std::vector<Touch> touches(std::span<const double> x) const override;
+  const std::vector<int>& vertex_shells() const override { return shell_of_; }
+  double contact_reach() const override { return 2.0 * radius_; }
   double vertex_radius() const { return radius_; }
 
  private:
@@ -113,13 +104,13 @@ void check_face_indices(const mesh::TriMesh& rest, const char* style);
 // grown by the cutoff, with the periodic axes of `sides` (if any) replaced by [0, L) and
 // flagged periodic. Throws cmp::ComputationError naming `style` on a non-finite position.
 neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
-                            const std::optional<VertexContacts::BoxSides>& sides, const char* style);
+                            const std::optional<ShellContactTerm::BoxSides>& sides, const char* style);
 
 // The cell grid of those contacts, built on X: cells one cutoff wide in open space; in a box,
 // about cbrt(#X) cells per axis at most (vertices lie on surfaces: finer grids are mostly
 // empty cells).
 neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
-                                  const std::optional<VertexContacts::BoxSides>& sides, const char* style);
+                                  const std::optional<ShellContactTerm::BoxSides>& sides, const char* style);
 
 inline double hertz_energy(double h, double effective_modulus, double effective_radius) {
   return h > 0 ? (8.0 / 15.0) * effective_modulus * std::sqrt(effective_radius) * h * h * std::sqrt(h) : 0.0;

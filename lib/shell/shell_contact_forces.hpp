@@ -1,13 +1,14 @@
 #pragma once
 // The contacts between the shells of a packing and the forces they carry (thesis Ch. 4,
-// Eqs. S4.1-S4.5), from the vertex-vertex Hertz law of hertz_contacts.hpp (Eq. B.60):
-// two shells touch when a vertex of one overlaps a vertex of the other (distance < 2 R_v,
-// minimum image along the periodic axes). One contact is one pair of shells in one relative
-// periodic image: in a small box a shell can touch a neighbour and that neighbour's image
-// on its other side, two contacts.
+// Eqs. S4.1-S4.5), from the contact style the packing was made with (shell_contact_term.hpp):
+// hertz-vertices (Eq. B.60: two shells touch when a vertex of one overlaps a vertex of the
+// other, distance < 2 R_v) or hertz-faces (a vertex of one within delta of the other's
+// surface), minimum image along the periodic axes. One contact is one pair of shells in one
+// relative periodic image: in a small box a shell can touch a neighbour and that neighbour's
+// image on its other side, two contacts.
 //
-// For the contact (m, n), f_i is the Hertz force that the vertices of n exert on vertex i of
-// m, and
+// For the contact (m, n), f_i is the Hertz force that n exerts on vertex i of m (as the pushed
+// vertex, or as a corner of a pushed triangle, by its barycentric weight), and
 //   F_mn      = sum_i f_i                                             (S4.1-S4.4)
 //   F_mn^perp = (1/3) sum_i sum_{j(i)} (A_j / C_i) |f_i . n_j| f_i/|f_i|   (S4.5)
 // over the faces j(i) around i (area A_j, outward unit normal n_j) with C_i the barycentric
@@ -21,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace cmp::shell {
@@ -28,7 +30,7 @@ namespace cmp::shell {
 struct ShellContact {
   int m = 0, n = 0;            // the force is the one on shell m from shell n
   Eigen::Vector3i image = Eigen::Vector3i::Zero();  // n's periodic image seen from m [box sides]
-  int vertex_pairs = 0;        // overlapping vertex pairs
+  int vertex_pairs = 0;        // contacts of single vertices (pairs of vertices, vertex and triangle)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();       // F_mn [force]
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();      // Eq. S4.5 from m's side
   Eigen::Vector3d tangential = Eigen::Vector3d::Zero();  // F_mn - normal
@@ -39,11 +41,11 @@ struct ShellContact {
 // its own shell's surface). Sorted by m, n, image. V: the vertices, each shell unwrapped into
 // one periodic image (offsets as in shell_shapes.hpp); F: outward-oriented faces, each within
 // one shell; box: the periodic axes and their lengths (box.lengths; the non-periodic axes are
-// ignored); p: R_v, E, nu (walls unused). Throws cmp::UsageError when 2 R_v exceeds half a
-// periodic box side.
+// ignored); p: R_v or delta, E, nu (walls unused); style: hertz-vertices or hertz-faces.
+// Throws cmp::UsageError for an unknown style or a contact reach too large for a periodic side.
 std::vector<ShellContact> shell_contacts(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F,
                                          const std::vector<int>& offsets, const neighbours::Box& box,
-                                         const ContactParameters& p);
+                                         const ContactParameters& p, const std::string& style = "hertz-vertices");
 
 // Contacts of each shell (entries with m = k): #shells counts; their mean is Z.
 std::vector<int> contacts_per_shell(const std::vector<ShellContact>& contacts, int shells);

@@ -19,12 +19,14 @@ struct ShellModel {
   MaterialParameters material;
   PressureParameters load;         // the starting turgor
   bool walls = false;              // add hertz-walls (the planes in contact.walls, may be set later)
-  bool shell_contacts = false;     // add hertz-vertices (between the shells of the mesh)
+  bool shell_contacts = false;     // add the contact style between the shells of the mesh
+  std::string shell_contact_style = "hertz-vertices";  // its name: hertz-vertices or hertz-faces
   ContactParameters contact;
 };
 
 // The model as `# key=value` lines of a CSV: stretching, bending (or none), pressure_model, E, nu,
-// the thickness under `thickness_key` ("t" in shellpack shell's table) and vertex_radius.
+// the thickness under `thickness_key` ("t" in shellpack shell's table), vertex_radius, and with
+// shell contacts the contact style (and contact_distance for hertz-faces).
 void write_model_meta(io::CsvWriter& csv, const ShellModel& model, const std::string& thickness_key);
 
 // The system of `rest` with the model's terms, in the order stretching, bending, pressure,

@@ -5,10 +5,10 @@
 // turned by a random rotation, all in one mesh (shell after shell) in the sphere packing's box.
 //
 // Units: lengths in D_0, the volume-equivalent diameter (6 V / pi)^(1/3) of the mean shell
-// inflated at Pi_0. Shells touch through vertex spheres of radius R_v, so a shell's contact
-// envelope is about D + 2 R_v across: the packing is scaled so that the mean sphere diameter
-// becomes D_0 + 2 R_v (the `envelope` argument, 2 R_v / D_0), and the start is the jammed
-// packing of the envelopes. Shell i gets r_i / <r> times the rest diameter (the compress
+// inflated at Pi_0. Shells touch when their mid-surfaces come within the contact reach (2 R_v
+// for vertex spheres, delta for hertz-faces), so a shell's contact envelope is about D + reach
+// across: the packing is scaled so that the mean sphere diameter becomes D_0 + reach (the
+// `envelope` argument, reach / D_0), and the start is the jammed packing of the envelopes. Shell i gets r_i / <r> times the rest diameter (the compress
 // driver picks the rest diameter whose inflated shell at Pi_0 has diameter D_0, see
 // rest_diameter_for_inflated).
 #include "io/sphere_packing_xyz.hpp"

@@ -46,7 +46,7 @@ void ShellSystem::add(std::unique_ptr<EnergyTerm> term) {
     throw std::invalid_argument("shell: a term built for another mesh");
   if (!pressure_) pressure_ = dynamic_cast<TurgorPressure*>(term.get());
   if (!walls_) walls_ = dynamic_cast<WallContacts*>(term.get());
-  if (!contacts_) contacts_ = dynamic_cast<VertexContacts*>(term.get());
+  if (!contacts_) contacts_ = dynamic_cast<ShellContactTerm*>(term.get());
   terms_.push_back(std::move(term));
 }
 

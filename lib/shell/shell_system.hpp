@@ -10,6 +10,7 @@
 //   relax(s, parameters);                                 // FIRE to equilibrium
 #include "shell/energy_term.hpp"
 #include "shell/hertz_contacts.hpp"
+#include "shell/shell_contact_term.hpp"
 #include "shell/shell_partition.hpp"
 #include "shell/turgor_pressure.hpp"
 
@@ -43,7 +44,7 @@ class ShellSystem {
   // The first term of each kind, or nullptr.
   TurgorPressure* pressure() const { return pressure_; }
   WallContacts* walls() const { return walls_; }
-  VertexContacts* contacts() const { return contacts_; }
+  ShellContactTerm* contacts() const { return contacts_; }  // the contacts between shells
 
   // Holds these vertices where they are: their forces read zero and no integrator moves them.
   void fix(const std::vector<int>& vertices);
@@ -70,7 +71,7 @@ class ShellSystem {
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
   TurgorPressure* pressure_ = nullptr;
   WallContacts* walls_ = nullptr;
-  VertexContacts* contacts_ = nullptr;
+  ShellContactTerm* contacts_ = nullptr;
   std::vector<char> fixed_;
   std::vector<int> hinge_quads_;
   std::vector<double> hinge_rest_;

@@ -6,7 +6,6 @@
 #include "core/fixed_chunks.hpp"
 #include "neighbours/cell_grid.hpp"
 
-#include <omp.h>
 
 #include <algorithm>
 #include <atomic>
@@ -48,18 +47,13 @@ void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool
                        " is shorter than 4 contact distances (" + std::to_string(4.0 * delta_) + ")");
   }
   box_ = BoxSides{lengths, periodic};
+  list_valid_ = false;
 }
 
-void VertexFaceContacts::collect(std::span<const double> x) const {
+void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
-  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
-  records_.resize(static_cast<std::size_t>(chunks));
-  for (auto& r : records_) r.clear();
-  if (n == 0 || faces_.empty()) return;
-
-  // The longest edge now (minimum image: a shell may straddle a periodic face).
   double periods[3], inverse[3];
   for (int a = 0; a < 3; ++a) {
     const bool wraps = box_ && box_->periodic[a];
@@ -67,20 +61,17 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
     inverse[a] = wraps ? 1.0 / box_->lengths[a] : 0.0;
   }
   const double* X = scratch_.data();
-  const auto image = [&](const double* to, const double* from, double out[3]) {
-    for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(to[a] - from[a], periods[a], inverse[a]);
-  };
-  // Every point of a triangle lies within (its longest edge)/sqrt(3) of its nearest corner
-  // (the circumradius of an acute triangle, at most half the longest edge otherwise): a
-  // triangle within delta of p has a corner within delta + that. reach_ holds, per vertex,
-  // the largest such bound over its triangles.
+  // reach_ per vertex: delta + the longest edge of its triangles (minimum image: a shell may
+  // straddle a periodic face) / sqrt(3).
   reach_.assign(static_cast<std::size_t>(n), 0.0);
   double longest2 = 0;
   for (std::size_t f = 0; f < faces_.size(); f += 3) {
     double face2 = 0;
     for (int k = 0; k < 3; ++k) {
       double e[3];
-      image(X + 3 * faces_[f + k], X + 3 * faces_[f + (k + 1) % 3], e);
+      const double* a = X + 3 * faces_[f + k];
+      const double* b = X + 3 * faces_[f + (k + 1) % 3];
+      for (int c = 0; c < 3; ++c) e[c] = cmp::minimum_image(a[c] - b[c], periods[c], inverse[c]);
       face2 = std::max(face2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     }
     for (int k = 0; k < 3; ++k) reach_[faces_[f + k]] = std::max(reach_[faces_[f + k]], face2);
@@ -88,39 +79,105 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   }
   const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
   for (double& r : reach_) r = delta_ + std::sqrt(r * third);
-  const double longest = std::sqrt(longest2), cutoff = delta_ + std::sqrt(longest2 * third);
+  const double longest = std::sqrt(longest2), base = delta_ + std::sqrt(longest2 * third);
+  const double skin = 0.25 * base, cutoff = base + skin;
   if (box_)
     for (int a = 0; a < 3; ++a)
       if (box_->periodic[a] && !(box_->lengths[a] >= 2.0 * (cutoff + longest)))
         throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
-                               " is under 2 (delta + 1.58 longest edges) = " + std::to_string(2.0 * (cutoff + longest)));
+                               " is under 2 (1.5 (delta + 0.58 longest edge) + longest edge) = " +
+                               std::to_string(2.0 * (cutoff + longest)));
   // Vertex pairs of different shells within the cutoff (one pass over the cells, on one
-  // thread), kept in the direction(s) i -> j where x_i is within j's reach, then each vertex's
-  // partners in pair order (CSR).
+  // thread), kept in the direction(s) i -> j where x_i is within j's reach + skin; then each
+  // vertex's candidates: the triangles around its partners, ascending, each once.
   const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
   pairs_.clear();
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double r2) {
     if (shell_of_[i] == shell_of_[j]) return;
-    if (r2 < reach_[j] * reach_[j]) pairs_.insert(pairs_.end(), {i, j});
-    if (r2 < reach_[i] * reach_[i]) pairs_.insert(pairs_.end(), {j, i});
+    const double rj = reach_[j] + skin, ri = reach_[i] + skin;
+    if (r2 < rj * rj) pairs_.insert(pairs_.end(), {i, j});
+    if (r2 < ri * ri) pairs_.insert(pairs_.end(), {j, i});
   });
-  partner_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (std::size_t k = 0; k < pairs_.size(); k += 2) ++partner_start_[pairs_[k] + 1];
-  for (Eigen::Index v = 0; v < n; ++v) partner_start_[v + 1] += partner_start_[v];
-  partners_.resize(pairs_.size() / 2);
-  partner_next_.assign(partner_start_.begin(), partner_start_.end() - 1);
-  for (std::size_t k = 0; k < pairs_.size(); k += 2) partners_[partner_next_[pairs_[k]]++] = pairs_[k + 1];
+  std::vector<int> partner_start(static_cast<std::size_t>(n) + 1, 0), partners(pairs_.size() / 2);
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) ++partner_start[pairs_[k] + 1];
+  for (Eigen::Index v = 0; v < n; ++v) partner_start[v + 1] += partner_start[v];
+  std::vector<int> next(partner_start.begin(), partner_start.end() - 1);
+  for (std::size_t k = 0; k < pairs_.size(); k += 2) partners[next[pairs_[k]]++] = pairs_[k + 1];
+  candidate_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  candidates_.clear();
+  std::vector<int> mine;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    mine.clear();
+    for (int t = partner_start[i]; t < partner_start[i + 1]; ++t) {
+      const int j = partners[t];
+      mine.insert(mine.end(), incident_.begin() + incident_start_[j], incident_.begin() + incident_start_[j + 1]);
+    }
+    std::sort(mine.begin(), mine.end());
+    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    candidates_.insert(candidates_.end(), mine.begin(), mine.end());
+    candidate_start_[i + 1] = static_cast<int>(candidates_.size());
+  }
+  active_faces_ = candidates_;
+  std::sort(active_faces_.begin(), active_faces_.end());
+  active_faces_.erase(std::unique(active_faces_.begin(), active_faces_.end()), active_faces_.end());
+  reference_.assign(x.begin(), x.end());
+  tolerated_move_ = skin / 3.2;  // > 2 (1 + 1/sqrt 3) times the largest move
+  list_valid_ = true;
+}
 
-  // Faces already tried for the current vertex, per thread: key generation * n + vertex.
-  const int threads = std::max(1, omp_get_max_threads());
-  if (static_cast<int>(stamps_.size()) < threads) stamps_.resize(static_cast<std::size_t>(threads));
-  const long long base = ++generation_ * static_cast<long long>(n);
+bool VertexFaceContacts::candidates_hold(std::span<const double> x) const {
+  if (!list_valid_ || reference_.size() != x.size()) return false;
+  const double limit2 = tolerated_move_ * tolerated_move_;
+  for (std::size_t k = 0; k < x.size(); k += 3) {
+    const double dx = x[k] - reference_[k], dy = x[k + 1] - reference_[k + 1], dz = x[k + 2] - reference_[k + 2];
+    if (!(dx * dx + dy * dy + dz * dz < limit2)) return false;
+  }
+  return true;
+}
+
+void VertexFaceContacts::collect(std::span<const double> x) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
+  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  records_.resize(static_cast<std::size_t>(chunks));
+  for (auto& r : records_) r.clear();
+  if (n == 0 || faces_.empty()) return;
+  if (!candidates_hold(x)) build_candidates(x);
+
+  double periods[3], inverse[3];
+  for (int a = 0; a < 3; ++a) {
+    const bool wraps = box_ && box_->periodic[a];
+    periods[a] = wraps ? box_->lengths[a] : 0.0;
+    inverse[a] = wraps ? 1.0 / box_->lengths[a] : 0.0;
+  }
+  const double* X = x.data();
   const double delta2 = delta_ * delta_;
-
+  // Each candidate triangle's bounding sphere (centroid, largest corner distance): most
+  // candidates are farther than delta from it and skip the closest-point test.
+  bounds_.resize(faces_.size() / 3 * 4);
+  const long na = static_cast<long>(active_faces_.size());
+  const int face_chunks = static_cast<int>(std::max<long>(1, (na + kChunkVertices - 1) / kChunkVertices));
+  for_each_chunk(face_chunks, [&](int c) {
+    for (long k = chunk_begin(na, face_chunks, c), end = chunk_begin(na, face_chunks, c + 1); k < end; ++k) {
+      const long f = active_faces_[k];
+      const double* a = X + 3 * faces_[3 * f];
+      double e[2][3], g[3];
+      for (int k = 0; k < 2; ++k) {
+        const double* v = X + 3 * faces_[3 * f + 1 + k];
+        for (int d = 0; d < 3; ++d) e[k][d] = cmp::minimum_image(v[d] - a[d], periods[d], inverse[d]);
+      }
+      for (int d = 0; d < 3; ++d) g[d] = (e[0][d] + e[1][d]) / 3.0;
+      double r2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+      for (int k = 0; k < 2; ++k) {
+        const double dx = e[k][0] - g[0], dy = e[k][1] - g[1], dz = e[k][2] - g[2];
+        r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+      }
+      double* b = bounds_.data() + 4 * f;
+      for (int d = 0; d < 3; ++d) b[d] = a[d] + g[d];
+      b[3] = std::sqrt(r2) * (1.0 + 1e-12) + delta_;  // the reach of the sphere: delta beyond it
+    }
+  });
   std::atomic<bool> crowded{false};
   for_each_chunk(chunks, [&](int c) {
-    std::vector<long long>& stamp = stamps_[static_cast<std::size_t>(omp_get_thread_num())];
-    if (stamp.size() != faces_.size() / 3) stamp.assign(faces_.size() / 3, -1);
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
     struct Best {
       int shell, face;
@@ -129,36 +186,39 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
     };
     Best best[8];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
-      const int si = shell_of_[i];
-      if (si < 0 || partner_start_[i] == partner_start_[i + 1]) continue;
-      const long long key = base + i;
+      if (candidate_start_[i] == candidate_start_[i + 1]) continue;
       const double* p = X + 3 * i;
       int found = 0;
-      for (int t = partner_start_[i]; t < partner_start_[i + 1]; ++t) {
-        const int j = partners_[t];
-        for (int s = incident_start_[j]; s < incident_start_[j + 1]; ++s) {
-          const int f = incident_[s];
-          if (stamp[f] == key) continue;
-          stamp[f] = key;
-          // The corners relative to p, each in its minimum image.
-          Eigen::Vector3d corner[3];
-          for (int k = 0; k < 3; ++k) image(X + 3 * faces_[3 * f + k], p, corner[k].data());
-          const Eigen::Vector3d w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
-          const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
-          const double d2 = q.squaredNorm();
-          if (!(d2 < delta2)) continue;
-          const int sf = face_shell_[f];
-          int b = 0;
-          while (b < found && best[b].shell != sf) ++b;
-          if (b == found) {
-            if (found == 8) {  // no exception may leave a parallel region: reported below
-              crowded = true;
-              continue;
-            }
-            best[found++] = {sf, f, d2, w, q};
-          } else if (d2 < best[b].d2) {
-            best[b] = {sf, f, d2, w, q};
+      for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
+        const int f = candidates_[s];
+        const double* sphere = bounds_.data() + 4 * f;
+        double gap2 = 0;
+        for (int a = 0; a < 3; ++a) {
+          const double d = cmp::minimum_image(sphere[a] - p[a], periods[a], inverse[a]);
+          gap2 += d * d;
+        }
+        if (!(gap2 < sphere[3] * sphere[3])) continue;
+        // The corners relative to p, each in its minimum image.
+        Eigen::Vector3d corner[3];
+        for (int k = 0; k < 3; ++k) {
+          const double* v = X + 3 * faces_[3 * f + k];
+          for (int a = 0; a < 3; ++a) corner[k][a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
+        }
+        const Eigen::Vector3d w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
+        const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+        const double d2 = q.squaredNorm();
+        if (!(d2 < delta2)) continue;
+        const int sf = face_shell_[f];
+        int b = 0;
+        while (b < found && best[b].shell != sf) ++b;
+        if (b == found) {
+          if (found == 8) {  // no exception may leave a parallel region: reported below
+            crowded = true;
+            continue;
           }
+          best[found++] = {sf, f, d2, w, q};
+        } else if (d2 < best[b].d2) {
+          best[b] = {sf, f, d2, w, q};
         }
       }
       for (int b = 0; b < found; ++b) {
@@ -211,6 +271,20 @@ std::vector<VertexFaceContacts::Contact> VertexFaceContacts::contacts(std::span<
       const double h = delta_ - r.r;
       out.push_back({r.i, corner[k], Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(h, estar_, rstar_),
                      r.face, Eigen::Vector3d(r.w[0], r.w[1], r.w[2])});
+    }
+  return out;
+}
+
+std::vector<ShellContactTerm::Touch> VertexFaceContacts::touches(std::span<const double> x) const {
+  check_sizes(x);
+  collect(x);
+  std::vector<Touch> out;
+  for (const auto& chunk : records_)
+    for (const Record& r : chunk) {
+      const int* corner = faces_.data() + 3 * r.face;
+      const double h = delta_ - r.r;
+      out.push_back({r.i, {corner[0], corner[1], corner[2]}, Eigen::Vector3d(r.w[0], r.w[1], r.w[2]),
+                     Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(h, estar_, rstar_)});
     }
   return out;
 }

@@ -18,14 +18,16 @@
 // point of the surface, and delta can be the wall thickness t (two walls touching have their
 // mid-surfaces t apart) instead of vertex spheres sized to the triangles.
 //
-// Candidates come from linked cells (lib/neighbours) over the vertices, cut off at
-// delta + (the longest current edge)/sqrt(3) (every point of a triangle lies within its
-// longest edge/sqrt(3) of a corner, so a triangle within delta of p has a corner within that):
-// the pairs of vertices of different shells (one pass, one thread), each kept towards the
-// vertex whose own triangles can reach the other, then for each vertex the triangles incident
-// to its partners. The box is the vertices'
-// bounding box, or, once set_box() gave one, [0, L) with the minimum image along its periodic
-// axes: the interface of VertexContacts, so a packing run can take either style. Vertices are
+// Candidates: for each vertex, the triangles that may come within delta of it, from a Verlet
+// list. Every point of a triangle lies within (its longest edge)/sqrt(3) of a corner, so a
+// triangle within delta of p has a corner within reach = delta + that; the list holds, per
+// vertex, the triangles around every vertex of another shell within reach + skin (linked cells
+// of lib/neighbours over the vertices, one pass on one thread), skin = reach/4. It is kept
+// while no vertex has moved more than skin/3.2 since it was built (then no triangle outside it
+// can be within delta: distances and edges change by at most twice that) and the box has not
+// changed. The box is the vertices' bounding box, or, once set_box() gave one, [0, L) with
+// the minimum image along its periodic
+// axes: the interface of ShellContactTerm, as VertexContacts, so a packing run can take either style. Vertices are
 // handled in fixed chunks on all threads; energies are summed per chunk in chunk order and the
 // forces added on one thread in chunk order: the same bits for any thread count.
 #include "shell/energy_term.hpp"
@@ -49,7 +51,7 @@ namespace cmp::shell {
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                                 const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
-class VertexFaceContacts final : public EnergyTerm {
+class VertexFaceContacts final : public ShellContactTerm {
  public:
   // Throws cmp::UsageError for bad parameters (contact_distance among them) or a face index
   // outside the mesh.
@@ -59,15 +61,16 @@ class VertexFaceContacts final : public EnergyTerm {
   void add_gradient(std::span<const double> x, std::span<double> g) const override;
   long vertex_count() const override { return static_cast<long>(shell_of_.size()); }
 
-  // As VertexContacts::set_box: the box [0, L), periodic along the flagged axes. Throws
-  // cmp::UsageError for a side that is not positive and finite or a periodic side shorter than
-  // 4 delta. At each call, a periodic side must also be at least 2 (delta + (1 + 1/sqrt 3) L),
-  // L the longest edge
-  // (cmp::ComputationError otherwise).
-  using BoxSides = VertexContacts::BoxSides;
-  void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic);
-  void clear_box() { box_.reset(); }
-  const std::optional<BoxSides>& box() const { return box_; }
+  // The box [0, L), periodic along the flagged axes. Throws cmp::UsageError for a side that is
+  // not positive and finite or a periodic side shorter than 4 delta. At each call, a periodic
+  // side must also be at least 2 (1.5 (delta + L/sqrt 3) + L), L the longest edge (the Verlet
+  // list's reach and a triangle's span; cmp::ComputationError otherwise).
+  void set_box(const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) override;
+  void clear_box() override {
+    box_.reset();
+    list_valid_ = false;
+  }
+  const std::optional<BoxSides>& box() const override { return box_; }
 
   // One contact: vertex i against the closest triangle `face` of another shell. d = p - q
   // (minimum image; q = sum_k weights[k] x_{F(face, k)}, taken in p's image), r = |d|, the
@@ -84,12 +87,15 @@ class VertexFaceContacts final : public EnergyTerm {
   };
   // Every contact at x, vertex by vertex (ascending), shells of each vertex in the order met.
   std::vector<Contact> contacts(std::span<const double> x) const;
+  // The same contacts as the common interface takes them (corners and weights of the face).
+  std::vector<Touch> touches(std::span<const double> x) const override;
   // 1 for every vertex in a contact at x: the pushed vertex and the corners of the triangle
   // with a positive weight.
-  std::vector<char> touching(std::span<const double> x) const;
-  const std::vector<int>& vertex_shells() const { return shell_of_; }
+  std::vector<char> touching(std::span<const double> x) const override;
+  const std::vector<int>& vertex_shells() const override { return shell_of_; }
   const std::vector<int>& face_shells() const { return face_shell_; }
   double contact_distance() const { return delta_; }
+  double contact_reach() const override { return delta_; }
 
   static constexpr long kChunkVertices = 2048;
 
@@ -106,11 +112,19 @@ class VertexFaceContacts final : public EnergyTerm {
   double delta_, estar_, rstar_;
   std::optional<BoxSides> box_;
   mutable mesh::VertexMatrix scratch_;
-  mutable std::vector<int> pairs_, partner_start_, partners_, partner_next_;  // vertex pairs, per vertex (CSR)
+  // The Verlet list: candidate triangles per vertex (CSR, ascending), the positions it was
+  // built at and the largest move it tolerates.
+  void build_candidates(std::span<const double> x) const;
+  bool candidates_hold(std::span<const double> x) const;
+  mutable std::vector<int> candidate_start_, candidates_;
+  mutable std::vector<int> active_faces_;  // every candidate triangle once, ascending
+  mutable std::vector<double> reference_;
+  mutable std::vector<double> bounds_;  // per face: centroid and bounding radius + delta
+  mutable double tolerated_move_ = 0;
+  mutable bool list_valid_ = false;
+  mutable std::vector<int> pairs_;     // vertex pairs (i, j): j's triangles are i's candidates
   mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
   mutable std::vector<std::vector<Record>> records_;
-  mutable std::vector<std::vector<long long>> stamps_;  // per thread, per face: the last key that tried it
-  mutable long long generation_ = 0;                   // calls of collect(): key = generation * #V + vertex
 };
 
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,

@@ -5,6 +5,7 @@
 //     walls, on two overlapping shells)
 //   - stretching and bending: zero energy and zero gradient on the rest mesh
 #include "shell/hertz_contacts.hpp"
+#include "shell/shell_contact_term.hpp"
 #include "shell/styles.hpp"
 #include "shell/vertex_face_contacts.hpp"
 
@@ -187,10 +188,90 @@ TEST_CASE("style tables have unique names and one-line descriptions and find by 
 
 // set_box of the shell-shell contact styles (the same interface on each).
 static void set_box_of(EnergyTerm& term, const Eigen::Vector3d& lengths, std::array<bool, 3> periodic) {
-  if (auto* v = dynamic_cast<VertexContacts*>(&term)) return v->set_box(lengths, periodic);
-  auto* f = dynamic_cast<VertexFaceContacts*>(&term);
-  REQUIRE(f);
-  f->set_box(lengths, periodic);
+  auto* c = dynamic_cast<ShellContactTerm*>(&term);
+  REQUIRE(c);
+  c->set_box(lengths, periodic);
+}
+
+TEST_CASE("every shell-contact style: its touches carry exactly its forces, between different shells",
+          "[shell][styles]") {
+  // What a compression's virial and Z and analyze's contact forces read (touches()) must be
+  // the force the relaxation felt (add_gradient): rebuilt from the touches, vertex by vertex.
+  ContactParameters p = contact_parameters();
+  p.walls.clear();
+  int styles = 0;
+  for (const auto& style : contact_styles())
+    for (bool boxed : {false, true})
+      for (unsigned seed : {1u, 2u}) {
+        const auto rest = two_shells(seed);
+        ContactParameters q = p;
+        if (boxed) q.box = Eigen::Vector3d(6, 6, 6);
+        const auto term = style.make(rest, q);
+        const auto* law = dynamic_cast<const ShellContactTerm*>(term.get());
+        if (!law) continue;  // walls
+        INFO(style.name << (boxed ? " in a periodic box" : " in open space") << " seed " << seed);
+        ++styles;
+        auto x = deformed(rest, 300 + seed);
+        if (boxed) x = fx::moved(x, Eigen::Matrix3d::Identity(), Eigen::Vector3d(-0.97, 1.0, 2.0));
+        std::vector<double> g(x.size(), 0.0), rebuilt(x.size(), 0.0);
+        term->add_gradient(x, g);
+        const auto touches = law->touches(x);
+        REQUIRE(touches.size() > 10);
+        const auto& shell = law->vertex_shells();
+        for (const auto& t : touches) {
+          CHECK(t.overlap > 0);
+          CHECK(t.r == Approx(t.d.norm()).epsilon(1e-14));
+          CHECK(t.weights.sum() == Approx(1.0).epsilon(1e-14));
+          for (int k = 0; k < 3; ++k)
+            if (t.corners[k] >= 0) CHECK(shell[t.corners[k]] != shell[t.i]);
+          // On i: force along d; on the corners: minus that, split by the weights.
+          for (int a = 0; a < 3; ++a) {
+            const double f = t.force * t.d[a] / t.r;
+            rebuilt[3 * t.i + a] -= f;
+            for (int k = 0; k < 3; ++k)
+              if (t.corners[k] >= 0) rebuilt[3 * t.corners[k] + a] += t.weights[k] * f;
+          }
+        }
+        double largest = 0, error = 0;
+        for (std::size_t k = 0; k < g.size(); ++k) {
+          largest = std::max(largest, std::abs(g[k]));
+          error = std::max(error, std::abs(g[k] - rebuilt[k]));
+        }
+        REQUIRE(largest > 0);
+        CHECK(error < 1e-12 * largest);
+      }
+  CHECK(styles == 8);  // hertz-vertices and hertz-faces, open and periodic, two seeds
+}
+
+TEST_CASE("hertz-faces: the Verlet list kept over small moves finds what a fresh search finds", "[shell][faces]") {
+  // A walk of small random moves (each below the list's tolerance, together far beyond it, the
+  // contact sliding over new triangles): the term that keeps and rebuilds its list gives the energy and forces of a term built anew
+  // at every point.
+  ContactParameters p = contact_parameters();
+  p.walls.clear();
+  const auto rest = two_shells(3);
+  const auto kept = contact_style("hertz-faces").make(rest, p);
+  auto x = deformed(rest, 400);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> step(0.0, 0.002);
+  const std::size_t second = x.size() / 2;  // the second shell slides along y past the first
+  for (int move = 0; move < 150; ++move) {
+    for (double& v : x) v += step(rng);
+    for (std::size_t k = second + 1; k < x.size(); k += 3) x[k] += 0.01;
+    const auto fresh = contact_style("hertz-faces").make(rest, p);
+    INFO("move " << move);
+    const double e = fresh->energy(x);
+    CHECK(kept->energy(x) == Approx(e).epsilon(1e-14).margin(1e-300));
+    std::vector<double> g1(x.size(), 0.0), g2(x.size(), 0.0);
+    kept->add_gradient(x, g1);
+    fresh->add_gradient(x, g2);
+    double error = 0, largest = 0;
+    for (std::size_t k = 0; k < g1.size(); ++k) {
+      error = std::max(error, std::abs(g1[k] - g2[k]));
+      largest = std::max(largest, std::abs(g2[k]));
+    }
+    CHECK(error <= 1e-13 * largest);
+  }
 }
 
 TEST_CASE("hertz-vertices and hertz-faces in a periodic box: forces match the energy, and a shell may sit in any image",

@@ -156,7 +156,7 @@ case_bad_input() {
   printf 'hello\n' >junk.txt
   expect_error 2 "junk.txt" run junk.txt -o out.csv
   expect_error 2 "at most one of them may be '-'" run good.off --rdf -
-  expect_error 2 "good.off: R_v = 0.6: .*exceeds half the periodic length" run good.off --vertex-radius 0.6 -o out.csv
+  expect_error 2 "good.off: R_v = 0.6: .*periodic box side .* is shorter than" run good.off --vertex-radius 0.6 -o out.csv
   # A bad file among good ones: nothing written.
   expect_error 2 "badkey.off:6:" run good.off badkey.off -o out.csv
 }

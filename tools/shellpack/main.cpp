@@ -100,6 +100,11 @@ void check_compress(cli::Tool& tool, Options& o, const std::vector<std::string>&
   if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
   tool.check(m.pressure == "volume" || m.pressure == "turgor", "--pressure-model",
              "must be volume (constant volume) or turgor (constant Pi), got '" + m.pressure + "'");
+  tool.check(m.shell_contact_style == "hertz-faces" || m.shell_contact_style == "hertz-vertices", "--contact",
+             "must be hertz-faces (vertices against the other shells' triangles) or hertz-vertices (vertex spheres), got '" +
+                 m.shell_contact_style + "'");
+  tool.check(job.contact_distance == 0 || m.shell_contact_style == "hertz-faces", "--contact-distance",
+             "needs --contact hertz-faces");
   if (job.run.walls) {
     tool.check(job.run.phi_start > 0 && job.run.phi_start < 1, "--phi-start",
                "must lie in (0, 1) (the dilute start of the walled box, e.g. 0.08)");
@@ -185,12 +190,15 @@ void check_analyze(cli::Tool& tool, const packrun::AnalyzeBatch& b) {
 
 // The analyze options that override the file's values only when given.
 struct AnalyzeOverrides {
-  double E = 1, nu = 0.5, rv = 1, d0 = 1, p0 = 1;
-  CLI::Option *E_opt, *nu_opt, *rv_opt, *d0_opt, *p0_opt;
+  double E = 1, nu = 0.5, rv = 1, delta = 1, d0 = 1, p0 = 1;
+  std::string contact;
+  CLI::Option *E_opt, *nu_opt, *rv_opt, *delta_opt, *contact_opt, *d0_opt, *p0_opt;
   void apply(packrun::AnalyzeOptions& o) const {
     if (E_opt->count()) o.youngs_modulus = E;
     if (nu_opt->count()) o.poisson_ratio = nu;
     if (rv_opt->count()) o.vertex_radius = rv;
+    if (delta_opt->count()) o.contact_distance = delta;
+    if (contact_opt->count()) o.contact = contact;
     if (d0_opt->count()) o.d0 = d0;
     if (p0_opt->count()) o.p0 = p0;
   }
@@ -322,6 +330,14 @@ int main(int argc, char** argv) {
                                 "Hertz vertex radius R_v [u] (default: the file's vertex_radius=, else thickness=)",
                                 cli::positive())
                     ->default_str("");
+    ov.contact_opt = analyze->add_option("--contact", ov.contact,
+                                         "contact law between shells: hertz-vertices or hertz-faces (default: the file's "
+                                         "contact=, else hertz-vertices)");
+    ov.delta_opt = tool.add_double(*analyze, "--contact-distance", ov.delta,
+                                   "hertz-faces: contact distance delta [u] (default: the file's contact_distance=, else "
+                                   "thickness=)",
+                                   cli::positive())
+                       ->default_str("");
     ov.d0_opt = tool.add_double(*analyze, "--d0", ov.d0, "D0, the unit of g(r) [u] (default: the file's D0=, else from the volumes)",
                                 cli::positive())->default_str("");
     ov.p0_opt = tool.add_double(*analyze, "--p0", ov.p0, "initial turgor P0 [P] (default: the file's P0=)", cli::positive())
@@ -375,8 +391,15 @@ int main(int argc, char** argv) {
     tool.add_double(*cp, "--phi-start", cj.run.phi_start, "--walls: the starting volume fraction (below the jammed one)");
     tool.add_double(*cp, "--wall-modulus", o.compress_wall_modulus, "--walls: Young's modulus of the walls [E] (default rigid)",
                     cli::positive());
+    cp->add_option("--contact", cm.shell_contact_style,
+                   "contacts between shells: hertz-faces (every vertex against the other shells' triangles within "
+                   "--contact-distance) or hertz-vertices (vertex spheres of radius --vertex-radius)")
+        ->default_str(cm.shell_contact_style);
+    tool.add_double(*cp, "--contact-distance", cj.contact_distance,
+                    "hertz-faces: the distance delta between touching mid-surfaces [D0] (0: t)", cli::non_negative());
     tool.add_double(*cp, "--vertex-radius", cj.vertex_radius,
-                    "Hertz vertex radius R_v [D0] (0: t, or 0.75 x the largest triangle circumradius if larger)",
+                    "Hertz vertex radius R_v [D0] of hertz-vertices and of the walls (0: t, or 0.75 x the largest "
+                    "triangle circumradius if larger)",
                     cli::non_negative());
     tool.add_double(*cp, "--ftol", cj.run.relax.relative_tolerance,
                     "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
@@ -402,7 +425,11 @@ int main(int argc, char** argv) {
     if (jam->parsed()) check_jam(tool, o);
     if (structure->parsed()) check_structure(tool, o.structure);
     if (sh->parsed()) check_shell(tool, o);
-    if (analyze->parsed()) check_analyze(tool, an);
+    if (analyze->parsed()) {
+      check_analyze(tool, an);
+      tool.check(!ov.contact_opt->count() || ov.contact == "hertz-vertices" || ov.contact == "hertz-faces", "--contact",
+                 "must be hertz-vertices or hertz-faces, got '" + ov.contact + "'");
+    }
     if (bench->parsed()) tool.collect("case", [&] { shell::check_mechanics_benchmark(o.bench_case); });
     tool.finish_checks();
     cli::apply_threads(o.common);
