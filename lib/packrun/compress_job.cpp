@@ -2,6 +2,8 @@
 
 #include "shell/penetration.hpp"
 
+#include "mesh/dual_areas.hpp"
+
 #include "cli/progress.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_output.hpp"
@@ -107,6 +109,28 @@ std::vector<std::string> compress_checkpoint_args(const std::string& path) {
   return io::read_checkpoint_header(in, path, kMagic, kWhat);
 }
 
+namespace {
+
+// What to change when shells passed through each other. The hertz-faces barrier holds a vertex
+// with at most the Hertz force at full overlap, h = delta; the turgor presses a vertex with
+// about Pi times its dual area: past that the vertex goes through.
+std::string penetration_advice(const shell::ShellSystem& s, const shell::ShellModel& m) {
+  if (m.shell_contact_style != "hertz-faces") return "raise --vertex-radius or lower --step";
+  const mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
+  const Eigen::VectorXd area = mesh::vertex_dual_areas(V, s.rest().F);
+  const auto& turgor = s.pressure()->turgors();
+  const auto& shell_of = s.shells().vertex_shell;
+  double load = 0;
+  for (long v = 0; v < s.vertex_count(); ++v) load = std::max(load, std::abs(turgor[shell_of[v]]) * area[v]);
+  const double delta = m.contact.contact_distance;
+  const double barrier = shell::hertz_force(delta, m.contact.vertex_effective_modulus(), 0.5 * delta);
+  return fmt::format("the face barrier holds a vertex with at most {:.3g} E D0^2 (delta = {}), the turgor presses one "
+                     "with up to {:.3g}: raise --contact-distance, refine the mesh or lower --step",
+                     barrier / m.material.youngs_modulus, io::format_number(delta), load / m.material.youngs_modulus);
+}
+
+}  // namespace
+
 double default_vertex_radius(double thickness, double max_circumradius) {
   return std::max(thickness, 0.75 * max_circumradius);
 }
@@ -126,6 +150,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                 ? job.vertex_radius
                                 : default_vertex_radius(m.material.thickness, shell::max_circumradius(cell) * largest);
   m.contact.contact_distance = job.contact_distance > 0 ? job.contact_distance : m.material.thickness;
+  m.shell_contacts = true;
   shell::ShellModel inflate = m;
   inflate.load.turgor = o.turgor0;
   const double rest_diameter = shell::rest_diameter_for_inflated(cell, inflate, o.relax);
@@ -301,9 +326,10 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     bar.finish();
     throw ComputationError(fmt::format(
         "step {} (phi {}): vertex {} of shell {} lies inside shell {} ({} vertices inside other shells): the shells "
-        "pass through each other; raise --vertex-radius or lower --step{}",
+        "pass through each other; {}{}",
         row.step, io::format_number(row.phi), found.front().vertex, found.front().vertex_shell, found.front().shell,
-        found.size(), job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
+        found.size(), penetration_advice(s, m),
+        job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
   };
   const auto write_packing = [&](std::size_t target) {
     const double phi = targets[target];

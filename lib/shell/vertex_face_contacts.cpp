@@ -8,7 +8,6 @@
 
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -176,19 +175,10 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
       b[3] = std::sqrt(r2) * (1.0 + 1e-12) + delta_;  // the reach of the sphere: delta beyond it
     }
   });
-  std::atomic<bool> crowded{false};
   for_each_chunk(chunks, [&](int c) {
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
-    struct Best {
-      int shell, face;
-      double d2;
-      Eigen::Vector3d w, q;
-    };
-    Best best[8];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
-      if (candidate_start_[i] == candidate_start_[i + 1]) continue;
       const double* p = X + 3 * i;
-      int found = 0;
       for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
         const int f = candidates_[s];
         const double* sphere = bounds_.data() + 4 * f;
@@ -208,26 +198,10 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
         const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
         const double d2 = q.squaredNorm();
         if (!(d2 < delta2)) continue;
-        const int sf = face_shell_[f];
-        int b = 0;
-        while (b < found && best[b].shell != sf) ++b;
-        if (b == found) {
-          if (found == 8) {  // no exception may leave a parallel region: reported below
-            crowded = true;
-            continue;
-          }
-          best[found++] = {sf, f, d2, w, q};
-        } else if (d2 < best[b].d2) {
-          best[b] = {sf, f, d2, w, q};
-        }
-      }
-      for (int b = 0; b < found; ++b) {
-        const Best& k = best[b];
-        out.push_back({static_cast<int>(i), k.face, {k.w[0], k.w[1], k.w[2]}, {-k.q[0], -k.q[1], -k.q[2]}, std::sqrt(k.d2)});
+        out.push_back({static_cast<int>(i), f, {w[0], w[1], w[2]}, {-q[0], -q[1], -q[2]}, std::sqrt(d2)});
       }
     }
   });
-  if (crowded) throw ComputationError("hertz-faces: a vertex within reach of more than 8 other shells");
 }
 
 double VertexFaceContacts::energy(std::span<const double> x) const {

@@ -1,22 +1,27 @@
 #pragma once
 // Hertz contacts of shells through their surfaces ("hertz-faces"): every vertex p of a shell A
 // is pushed out of a layer of thickness delta (the contact distance) around every other shell
-// B's triangulated surface.
+// B's triangulated surface, by each of B's triangles T within delta of it:
 //
-//   d     = min over B's triangles T near p of |p - q_T|, q_T the closest point of T to p
-//           (minimum image in a periodic box); one contact per (vertex, other shell) pair
-//   h     = delta - d > 0
-//   U     = (8/15) E* sqrt(R*) h^(5/2),   E* = E / (2 (1 - nu^2)) (as for vertex spheres),
-//           R* = delta / 2 (a sphere of radius delta/2 on a plate: the plate's curvature is
-//           the shell's, far below 1/delta)
-//   force -U'(h) (p - q)/d on p, and its opposite on the closest triangle's corners, split
-//           by the barycentric weights of q: the exact gradient of U (q minimises the distance,
-//           so its own motion drops out). Where the closest triangle changes across a shared
-//           edge or corner, q and its weights agree on both sides: U is C1 there.
+//   d_T   = |p - q_T|, q_T the closest point of T to p (minimum image in a periodic box)
+//   h     = delta - d_T > 0
+//   U     = sum over T of (8/15) E* sqrt(R*) h^(5/2),   E* = E / (2 (1 - nu^2)) (as for vertex
+//           spheres), R* = delta / 2 (a sphere of radius delta/2 on a plate: the plate's
+//           curvature is the shell's, far below 1/delta)
+//   force -U'(h) (p - q_T)/d_T on p per triangle, and its opposite on T's corners, split by
+//           the barycentric weights of q_T: the exact gradient (q_T minimises the distance to
+//           T, so its own motion drops out). Each d_T is C1 in the positions while p is off T,
+//           so U is C1 everywhere.
+// Every triangle counts, not only the closest one of each shell: in a valley of B's surface
+// (a dimple, the groove between two flattened facets) the closest triangle jumps from one
+// side to the other across the bisector, and a force taken from it alone jumps with it; the
+// relaxation then chatters there and stalls. The price: over an edge (a corner) of B, where
+// two (several) triangles share the closest point, the force is that many times the force over
+// a face; the barrier is at least U(delta) at every point of the surface.
 // Both ordered pairs count (A's vertices against B's faces and B's vertices against A's), so a
-// vertex can no longer slip between another shell's vertex spheres: the barrier covers every
-// point of the surface, and delta can be the wall thickness t (two walls touching have their
-// mid-surfaces t apart) instead of vertex spheres sized to the triangles.
+// vertex can no longer slip between another shell's vertex spheres, and delta can be the wall
+// thickness t (two walls touching have their mid-surfaces t apart) instead of vertex spheres
+// sized to the triangles.
 //
 // Candidates: for each vertex, the triangles that may come within delta of it, from a Verlet
 // list. Every point of a triangle lies within (its longest edge)/sqrt(3) of a corner, so a
@@ -72,7 +77,7 @@ class VertexFaceContacts final : public ShellContactTerm {
   }
   const std::optional<BoxSides>& box() const override { return box_; }
 
-  // One contact: vertex i against the closest triangle `face` of another shell. d = p - q
+  // One contact: vertex i against a triangle `face` of another shell within delta. d = p - q
   // (minimum image; q = sum_k weights[k] x_{F(face, k)}, taken in p's image), r = |d|, the
   // overlap h = delta - r > 0 and the repulsive force magnitude along d (on p; the triangle's
   // corners take -force d/r split by the weights). j is the corner of the face with the
@@ -85,7 +90,7 @@ class VertexFaceContacts final : public ShellContactTerm {
     int face;
     Eigen::Vector3d weights;
   };
-  // Every contact at x, vertex by vertex (ascending), shells of each vertex in the order met.
+  // Every contact (vertex, triangle within delta) at x, vertex by vertex (ascending), triangles ascending.
   std::vector<Contact> contacts(std::span<const double> x) const;
   // The same contacts as the common interface takes them (corners and weights of the face).
   std::vector<Touch> touches(std::span<const double> x) const override;

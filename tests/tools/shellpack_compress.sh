@@ -21,7 +21,7 @@ bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0
 
 case_help() {
   "$shellpack" compress --help >help.txt || fail "--help"
-  for opt in --mesh --phi -o --csv --step --P0 -E --nu -t --model --bending --pressure-model --vertex-radius --ftol \
+  for opt in --mesh --phi -o --csv --step --P0 -E --nu -t --model --bending --pressure-model --contact --contact-distance --vertex-radius --ftol \
     --fire-max-iterations --checkpoint --checkpoint-every --resume --timings --seed --threads; do
     grep -q -- "$opt" help.txt || fail "--help lacks $opt"
   done
@@ -87,6 +87,32 @@ case_compress_to_0_6() {
   awk -F, 'NR == FNR { z[FNR] = $1; t[FNR] = $2; e[FNR] = $3; next }
            { if ($1 != z[FNR] || (t[FNR] - $2) ^ 2 > 1e-18 * $2 ^ 2 || (e[FNR] - $3) ^ 2 > 1e-18) exit 1 }' a.txt c.txt ||
     fail "analyze disagrees with compress: $(cat a.txt) vs $(cat c.txt)"
+}
+
+case_faces_to_0_7() {
+  # hertz-faces: every vertex against the other shells' triangles (delta = t = 0.02 D0, far
+  # below these 162-vertex triangles, where vertex spheres of that reach would leave holes).
+  # The point-in-mesh check after every step finds no vertex inside another shell; the
+  # packings say which law made them, and analyze applies the same law: the same Z.
+  make_start
+  "$shellpack" compress jammed.xyz --mesh cell.off --contact hertz-faces --step 0.02 --ftol 1e-4 -q \
+    --phi 0.62,0.7 -o 'f_{phi}.off' >f.csv || fail "compress --contact hertz-faces"
+  [ "$(col f.csv stop | sort -u)" = converged ] || fail "not converged: $(col f.csv stop)"
+  col f.csv volume_error | awk '$1 > 1e-3 { exit 1 }' || fail "volume not held: $(col f.csv volume_error)"
+  grep -q "^# contact=hertz-faces$" f.csv || fail "CSV lacks # contact=hertz-faces"
+  phij=$(key f.csv phi_J)
+  awk -v p="$phij" 'BEGIN { exit !(p > 0.5) }' || fail "phi_J = $phij: the thin face envelope should jam above 0.5"
+  for f in f_0.62.off f_0.7.off; do
+    [ "$(key "$f" contact)" = hertz-faces ] || fail "$f: contact=$(key "$f" contact)"
+    [ "$(key "$f" contact_distance)" = 0.02 ] || fail "$f: contact_distance=$(key "$f" contact_distance)"
+  done
+  z7=$(awk -F, '/^#/{next} $2=="0.7"{print $8}' f.csv)
+  awk -v z="$z7" 'BEGIN { exit !(z >= 8) }' || fail "Z = $z7 at phi 0.7"
+  "$shellpack" analyze f_0.7.off -q >a.csv || fail "analyze"
+  [ "$(col a.csv Z)" = "$z7" ] || fail "analyze Z $(col a.csv Z) against compress $z7"
+  # The vertex law on the same packing finds another Z: analyze did read contact=.
+  "$shellpack" analyze f_0.7.off --contact hertz-vertices --vertex-radius 0.005 -q >v.csv || fail "analyze --contact"
+  [ "$(col v.csv Z)" != "$z7" ] || fail "--contact hertz-vertices gave the faces' Z"
 }
 
 case_same_bytes_on_1_and_2_threads() {
@@ -158,6 +184,12 @@ case_bad_targets() {
   expect_error 2 "--phi: target 0.2 is below the starting volume fraction" compress --phi 0.2,0.5 -o 'out_{phi}.off'
   expect_error 2 "-o: must contain {phi}" compress --phi 0.5,0.6 -o out.off
 }
+case_bad_contact() {
+  make_start
+  expect_error 2 "--contact: must be hertz-faces .* got 'hertz-walls'" compress --phi 0.7 --contact hertz-walls
+  expect_error 2 "--contact-distance: needs --contact hertz-faces" compress --phi 0.7 --contact-distance 0.03
+}
+
 case_bad_resume() {
   make_start
   echo "not a checkpoint" >other.chk
