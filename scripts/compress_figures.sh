@@ -8,12 +8,21 @@
 # dphi = 0.15 (the thesis's power-law range) and the shape law delta_eps = C dphi^e.
 # Writes $out/compress/N<N>/{compress.csv,structure.csv,rdf.csv,dz_fit.csv,shape_fit.csv} and
 # $out/shell_compress.png. N = 32 and 50 at 642 vertices: about 15 minutes on 2 cores.
+# COMPRESS_CONTACT (hertz-vertices) is the contact law of these runs; COMPRESS_N="" skips them.
+# Then towards confluence: COMPRESS_HIGH_N (16) shells of the same cell with hertz-faces
+# (vertices against triangles: the vertex-sphere layer cannot go much past phi = 0.85) from
+# jamming to phi = COMPRESS_HIGH_PHI (0.95) in steps of 0.05, analysed:
+# $out/compress/faces<N>/{compress.csv,structure.csv} and the table
+# $out/compress/faces<N>/table.md (about 25 minutes at 16 x 642).
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
-sizes=${COMPRESS_N:-32 50}
+sizes=${COMPRESS_N-32 50}
 level=${COMPRESS_LEVEL:-4}
 seed=${COMPRESS_SEED:-1}
+contact=${COMPRESS_CONTACT:-hertz-vertices}
+high_n=${COMPRESS_HIGH_N:-16}
+high_phi=${COMPRESS_HIGH_PHI:-0.95}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin="$build/bin"
 runs="" labels=""
@@ -24,13 +33,19 @@ for n in $sizes; do
   "$bin/shellpack" jam -N "$n" --seed "$seed" -q -o "$dir/jam.xyz" --csv "$dir/jam.csv"
   "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$dir/cell.off"
   rm -f "$dir"/pack_*.off
-  "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" \
+  "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact "$contact" \
     --dphi 0.001,0.01,0.05,0.1,0.15,0.2,0.25,0.3 -o "$dir/pack_{phi}.off" -q >"$dir/compress.csv"
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
-  # g(r) in units of the contact distance sigma = D0 + 2 R_v of the vertex spheres (the
-  # jammed spheres' diameter), where the thesis's sigma = D0 puts its contact peak.
-  rv=$(sed -n 's/^# vertex_radius=//p' "$(ls "$dir"/pack_*.off | head -1)")
-  "$bin/shellpack" analyze "$dir"/pack_*.off --d0 "$(awk -v r="$rv" 'BEGIN { printf "%.6f", 1 + 2 * r }')" \
+  # g(r) in units of the contact envelope sigma = D0 + reach (2 R_v of the vertex spheres, or
+  # delta of the faces: the jammed spheres' diameter), where the thesis's sigma = D0 puts its
+  # contact peak.
+  first_pack=$(ls "$dir"/pack_*.off | head -1)
+  if [ "$contact" = hertz-faces ]; then
+    reach=$(sed -n 's/^# contact_distance=//p' "$first_pack")
+  else
+    reach=$(awk -v r="$(sed -n 's/^# vertex_radius=//p' "$first_pack")" 'BEGIN { print 2 * r }')
+  fi
+  "$bin/shellpack" analyze "$dir"/pack_*.off --d0 "$(awk -v r="$reach" 'BEGIN { printf "%.6f", 1 + r }')" \
     --rdf "$dir/rdf.csv" -q >/dev/null
   # dZ near jamming: the shells' own jamming point is fitted (phi_c, as a dphi: the shells
   # settle into contact a little above the start, where Z crosses 6 - 4/N).
@@ -42,8 +57,31 @@ for n in $sizes; do
   labels="${labels:+$labels }N=$n"
 done
 # g(r) of the first N at dphi = 0.001, 0.01, 0.1 and 0.3 (its 1st, 2nd, 4th and 8th packing).
-first=${runs# }; first=${first%% *}
-packs=$(ls "$first"/pack_*.off | sort | sed -n '1p;2p;4p;8p' | tr '\n' ' ')
-gnuplot -e "runs='${runs# }'; labels='$labels'; packs='${packs% }'; packlabels='0.001 0.01 0.1 0.3'; out='$out/shell_compress.png'" \
-  "$src/scripts/plot_compress.gp"
-echo "make compress-figures: $out/shell_compress.png" >&2
+if [ -n "${runs# }" ]; then
+  first=${runs# }; first=${first%% *}
+  packs=$(ls "$first"/pack_*.off | sort | sed -n '1p;2p;4p;8p' | tr '\n' ' ')
+  gnuplot -e "runs='${runs# }'; labels='$labels'; packs='${packs% }'; packlabels='0.001 0.01 0.1 0.3'; out='$out/shell_compress.png'" \
+    "$src/scripts/plot_compress.gp"
+  echo "make compress-figures: $out/shell_compress.png" >&2
+fi
+
+# Towards confluence with hertz-faces: phi, Z, turgor, shapes and Voronoi facets per target.
+if [ "$high_n" -gt 0 ]; then
+  dir="$out/compress/faces$high_n"
+  mkdir -p "$dir"
+  echo "== towards confluence: $high_n shells, hertz-faces, to phi = $high_phi" >&2
+  "$bin/shellpack" jam -N "$high_n" --seed "$seed" -q -o "$dir/jam.xyz" --csv "$dir/jam.csv"
+  "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$dir/cell.off"
+  rm -f "$dir"/pack_*.off
+  "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact hertz-faces \
+    --phi "0.6:$high_phi:0.05" -o "$dir/pack_{phi}.off" --timings -q >"$dir/compress.csv"
+  "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
+  awk -F, '/^#/ { next }
+    !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
+         print "| phi | Z | <Pi>/Pi0 | cv(Pi) | delta_eps | Voronoi facets | force cv |"; print "|---|---|---|---|---|---|---|"; next }
+    { printf "| %s | %.2f | %.2f | %.3f | %.3f | %.2f | %.2f |\n", $c["phi"], $c["Z"], $c["turgor_mean_P0"],
+        $c["turgor_cv"], $c["delta_eps_mean"], $c["voronoi_faces_mean"], $c["force_normal_cv"] }' \
+    "$dir/structure.csv" >"$dir/table.md"
+  cat "$dir/table.md"
+  echo "make compress-figures: $dir/table.md" >&2
+fi
