@@ -14,20 +14,22 @@
 #include "elasticity/benchmark_curves.hpp"
 #include "io/atomic_output.hpp"
 #include "packrun/analyze_batch.hpp"
-#include "packrun/compress_job.hpp"
 #include "packrun/jam_batch.hpp"
 #include "packrun/shell_job.hpp"
 #include "packrun/structure_batch.hpp"
 #include "shell/mechanics_benchmarks.hpp"
 #include "shell/styles.hpp"
 
+#include "compress_command.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
 #include <iostream>
-#include <limits>
 
 using namespace cmp;
+using shellpack::CompressCommand;
+using shellpack::with_checkpoint_args;
 
 namespace {
 
@@ -44,94 +46,7 @@ struct Options {
   // bench-mechanics
   std::string bench_case, bench_output = "-";
   bool bench_full = false, bench_analytic = false;
-  // compress
-  packrun::CompressJob compress;
-  std::string compress_phi, compress_dphi;
-  double compress_p0 = 0.0025;
-  double compress_wall_modulus = std::numeric_limits<double>::infinity();
-  bool no_penetration_check = false;
 };
-
-// compress: the options that only steer this process, left out of a checkpoint's arguments
-// (with the value each takes).
-int process_only(const std::string& a) {
-  if (a == "--threads" || a == "--resume" || a == "--stop-after-steps") return 1;
-  if (a == "-q" || a == "--quiet") return 0;
-  return -1;
-}
-
-// `shellpack compress --resume FILE [options]`: the checkpoint's arguments, then the ones
-// typed (the last wins). Returns argv unchanged for any other command line.
-std::vector<std::string> with_checkpoint_args(int argc, char** argv) {
-  std::vector<std::string> args(argv, argv + argc);
-  if (argc < 2 || args[1] != "compress") return args;
-  std::string resume;
-  for (int k = 2; k < argc; ++k) {
-    if (args[k] == "--resume" && k + 1 < argc) resume = args[k + 1];
-    if (args[k].starts_with("--resume=")) resume = args[k].substr(9);
-  }
-  if (resume.empty()) return args;
-  const auto stored = packrun::compress_checkpoint_args(resume);
-  std::vector<std::string> out{args[0], args[1]};
-  out.insert(out.end(), stored.begin(), stored.end());
-  out.insert(out.end(), args.begin() + 2, args.end());
-  return out;
-}
-
-void check_compress(cli::Tool& tool, Options& o, const std::vector<std::string>& args) {
-  auto& job = o.compress;
-  auto& m = job.run.model;
-  tool.check(!job.packing_path.empty(), "packing", "is required (a jammed sphere packing, or --resume)");
-  tool.check(!job.mesh_path.empty(), "--mesh", "is required");
-  tool.check(!o.compress_phi.empty() || !o.compress_dphi.empty(), "--phi", "is required (or --dphi)");
-  tool.check(o.compress_phi.empty() || o.compress_dphi.empty(), "--dphi", "cannot be combined with --phi");
-  if (!o.compress_phi.empty()) tool.collect("--phi", [&] { job.run.targets = packrun::parse_phi_targets(o.compress_phi); });
-  if (!o.compress_dphi.empty())
-    tool.collect("--dphi", [&] {
-      job.run.targets = packrun::parse_phi_targets(o.compress_dphi);
-      job.run.targets_relative = true;
-    });
-  tool.check(job.run.targets.size() <= 1 || job.output_pattern.empty() ||
-                 job.output_pattern.find("{phi}") != std::string::npos,
-             "-o", "must contain {phi} when --phi names several targets, e.g. -o 'pack_{phi}.off'");
-  tool.check(job.output_pattern != "-" || job.csv != "-", "--csv", "the packing already goes to stdout (-o -): write the CSV to a file");
-  tool.collect("--model", [&] { shell::stretching_style(m.stretching); });
-  if (m.bending == "none") m.bending.clear();
-  if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
-  tool.check(m.pressure == "volume" || m.pressure == "turgor", "--pressure-model",
-             "must be volume (constant volume) or turgor (constant Pi), got '" + m.pressure + "'");
-  tool.check(m.shell_contact_style == "hertz-faces" || m.shell_contact_style == "hertz-vertices", "--contact",
-             "must be hertz-faces (vertices against the other shells' triangles) or hertz-vertices (vertex spheres), got '" +
-                 m.shell_contact_style + "'");
-  tool.check(job.contact_distance == 0 || m.shell_contact_style == "hertz-faces", "--contact-distance",
-             "needs --contact hertz-faces");
-  if (job.run.walls) {
-    tool.check(job.run.phi_start > 0 && job.run.phi_start < 1, "--phi-start",
-               "must lie in (0, 1) (the dilute start of the walled box, e.g. 0.08)");
-    tool.check(job.run.targets.empty() || job.run.targets.front() > job.run.phi_start, "--phi",
-               "the targets must lie above --phi-start");
-    m.contact.wall_modulus = o.compress_wall_modulus * m.material.youngs_modulus;
-  } else {
-    tool.check(std::isinf(o.compress_wall_modulus), "--wall-modulus", "needs --walls");
-  }
-  tool.check(job.resume.empty() || !job.checkpoint.empty(), "--resume",
-             "needs the checkpoint's --checkpoint (kept in the file's arguments)");
-  job.run.turgor0 = o.compress_p0 * m.material.youngs_modulus;
-  job.check_penetration = !o.no_penetration_check;
-  job.seed = o.common.seed;
-  job.quiet = o.common.quiet;
-  // What a checkpoint records: the arguments after the subcommand but those steering only this process.
-  for (std::size_t k = 2; k < args.size(); ++k) {
-    if (const int takes = process_only(args[k]); takes >= 0) {
-      k += static_cast<std::size_t>(takes);
-      continue;
-    }
-    if (args[k].starts_with("--threads=") || args[k].starts_with("--resume=") ||
-        args[k].starts_with("--stop-after-steps="))
-      continue;
-    job.checkpoint_args.push_back(args[k]);
-  }
-}
 
 void check_jam(cli::Tool& tool, Options& o) {
   auto& p = o.jam.jamming;
@@ -356,72 +271,14 @@ int main(int argc, char** argv) {
     bench->add_option("-o,--output", o.bench_output, "CSV ('-': stdout)");
     tool.add_common(*bench, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
-    auto& cj = o.compress;
-    auto& cm = cj.run.model;
-    cm.pressure = "volume";
-    cm.material.youngs_modulus = 1.0;
-    cm.material.poisson_ratio = 0.5;
-    cm.material.thickness = 0.02;
-    cj.run.relax.relative_tolerance = 1e-5;
-    cj.run.relax.fire.max_iterations = 200000;
-    auto* cp = app->add_subcommand("compress", "pressurised elastic shells from a jammed sphere packing, compressed in a "
-                                               "periodic box towards confluence (5.2.1, Ch. 4); CSV row per box step");
-    // A resumed run repeats the checkpoint's arguments, then the ones typed: the last wins.
-    cp->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-    cp->add_option("packing", cj.packing_path, "jammed sphere packing, extended XYZ (shellpack jam; first frame; periodic)");
-    cp->add_option("--mesh", cj.mesh_path, "the cell: closed, outward-oriented triangle mesh (OFF), one copy per sphere");
-    cp->add_option("--phi", o.compress_phi, "target volume fractions, START:STOP:STEP or a list a,b,c (each in (0, 1])");
-    cp->add_option("--dphi", o.compress_dphi,
-                   "targets as dphi = phi - phi_J above the inflated start instead (same forms; phi_J + dphi rounded to 6 decimals)");
-    cp->add_option("-o,--output", cj.output_pattern, "write the packing OFF at each target here ({phi} = the target)");
-    cp->add_option("--csv", cj.csv, "the table of box steps ('-': stdout)")->default_str("-");
-    tool.add_double(*cp, "--step", cj.run.step, "largest change of the box side per step [D0]", cli::positive());
-    tool.add_double(*cp, "--P0", o.compress_p0, "turgor Pi_0 of the inflated start [E]", cli::positive());
-    tool.add_double(*cp, "-E,--youngs-modulus", cm.material.youngs_modulus, "Young's modulus E (the pressure unit)",
-                    cli::positive());
-    tool.add_double(*cp, "--nu,--poisson-ratio", cm.material.poisson_ratio, "Poisson's ratio nu", cli::left_open(-1, 0.5));
-    tool.add_double(*cp, "-t,--thickness", cm.material.thickness, "wall thickness t [D0]", cli::positive());
-    cp->add_option("--model", cm.stretching, "stretching model (shellpack shell --list-models)")->default_str("svk");
-    cp->add_option("--bending", cm.bending, "bending model, or none (a membrane)")->default_str("none");
-    cp->add_option("--pressure-model", cm.pressure, "volume (incompressible fill: Pi updated until every shell is "
-                                                    "within 0.1 % of V0) or turgor (Pi = Pi_0 fixed)")
-        ->default_str("volume");
-    cp->add_flag("--walls", cj.run.walls,
-                 "rigid box (Fig. 4.5): start dilute at --phi-start, walls on all six faces sweep the shells inward");
-    tool.add_double(*cp, "--phi-start", cj.run.phi_start, "--walls: the starting volume fraction (below the jammed one)");
-    tool.add_double(*cp, "--wall-modulus", o.compress_wall_modulus, "--walls: Young's modulus of the walls [E] (default rigid)",
-                    cli::positive());
-    cp->add_option("--contact", cm.shell_contact_style,
-                   "contacts between shells: hertz-faces (every vertex against the other shells' triangles within "
-                   "--contact-distance) or hertz-vertices (vertex spheres of radius --vertex-radius)")
-        ->default_str(cm.shell_contact_style);
-    tool.add_double(*cp, "--contact-distance", cj.contact_distance,
-                    "hertz-faces: the distance delta between touching mid-surfaces [D0] (0: t)", cli::non_negative());
-    tool.add_double(*cp, "--vertex-radius", cj.vertex_radius,
-                    "Hertz vertex radius R_v [D0] of hertz-vertices and of the walls (0: t, or 0.75 x the largest "
-                    "triangle circumradius if larger)",
-                    cli::non_negative());
-    tool.add_double(*cp, "--ftol", cj.run.relax.relative_tolerance,
-                    "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
-    tool.add_long(*cp, "--fire-max-iterations", cj.run.relax.fire.max_iterations,
-                  "FIRE iteration cap per relaxation (exit 1 when reached)", cli::at_least(1));
-    tool.add_int(*cp, "--max-volume-updates", cj.run.relax.max_volume_updates,
-                 "Pi updates of the constant-volume loop per step before giving up (exit 1)", cli::at_least(1));
-    cp->add_option("--checkpoint", cj.checkpoint, "save the run here every --checkpoint-every seconds and at the end");
-    tool.add_double(*cp, "--checkpoint-every", cj.checkpoint_every, "seconds between checkpoints", cli::non_negative());
-    cp->add_option("--resume", cj.resume, "continue the run saved in this checkpoint (alone: with its arguments)");
-    tool.add_long(*cp, "--stop-after-steps", cj.stop_after_steps,
-                  "stop after this many box steps (checkpoint and table so far; for tests)", cli::non_negative());
-    cp->add_flag("--no-penetration-check", o.no_penetration_check,
-                 "skip the check, after every step, that no vertex lies inside another shell");
-    cp->add_flag("--timings", cj.timings, "add the wall time of each step (`seconds`) to the CSV");
-    tool.add_common(*cp, o.common, cli::Tool::kSeed | cli::Tool::kThreads | cli::Tool::kQuiet);
+    CompressCommand compress;
+    auto* cp = compress.add(tool, *app, o.common);
 
     const auto full_args = with_checkpoint_args(argc, argv);
     std::vector<char*> full_argv;
     for (const auto& a : full_args) full_argv.push_back(const_cast<char*>(a.c_str()));
     tool.parse(static_cast<int>(full_argv.size()), full_argv.data());
-    if (cp->parsed()) check_compress(tool, o, full_args);
+    if (cp->parsed()) compress.check(tool, o.common, full_args);
     if (jam->parsed()) check_jam(tool, o);
     if (structure->parsed()) check_structure(tool, o.structure);
     if (sh->parsed()) check_shell(tool, o);
@@ -445,15 +302,7 @@ int main(int argc, char** argv) {
     if (sh->parsed()) packrun::run_shell_job(o.shell, provenance);
     if (analyze->parsed()) packrun::run_analyze_batch(an, provenance);
     if (bench->parsed()) run_bench_mechanics(o, provenance);
-    if (cp->parsed()) {
-      // The run as the checkpoint records it (without --resume, --threads, ...): an interrupted
-      // and resumed run then writes the same provenance, so the same bytes, as one never stopped.
-      std::vector<std::string> run_args{"shellpack", "compress"};
-      run_args.insert(run_args.end(), o.compress.checkpoint_args.begin(), o.compress.checkpoint_args.end());
-      std::vector<char*> run_argv;
-      for (auto& a : run_args) run_argv.push_back(a.data());
-      packrun::run_compress_job(o.compress, cli::provenance("shellpack", static_cast<int>(run_argv.size()), run_argv.data()));
-    }
+    if (cp->parsed()) compress.run();
     return 0;
   });
 }
