@@ -48,7 +48,7 @@ double max_block_norm(const Eigen::VectorXd& f, int block_size) {
 }
 
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& p,
-                const FireProgress& progress, long progress_every) {
+                const FireProgress& progress, long progress_every, const FireAdjust& adjust) {
   p.validate();
   if (x.size() % p.block_size != 0) throw UsageError("FIRE: state size is not a multiple of the block size");
   FireResult result;
@@ -75,6 +75,11 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   result.max_force = max_block_norm(f, p.block_size);
   for (long it = 0;; ++it, governor.tick()) {
     result.iterations = it;
+    if (adjust && adjust(it, result.max_force)) {
+      forces(x, f);
+      ++result.force_evaluations;
+      result.max_force = max_block_norm(f, p.block_size);
+    }
     if (!std::isfinite(result.max_force))
       throw ComputationError("FIRE: non-finite force after " + std::to_string(it) + " iterations");
     if (result.max_force <= p.force_tolerance) { result.stop = FireStop::ForceTolerance; return result; }

@@ -54,12 +54,18 @@ using ForceFunction = std::function<void(const Eigen::VectorXd& x, Eigen::Vector
 // the minimisation with FireStop::Interrupted.
 using FireProgress = std::function<bool(long iterations, double max_force)>;
 
+// Called at the top of every iteration, before the convergence test, with (iterations,
+// max|f_i|); returns true when it has changed the force field itself (a constant-volume
+// driver moving Pi while x relaxes), and the forces are then evaluated afresh at the same x
+// (the velocity is kept).
+using FireAdjust = std::function<bool(long iterations, double max_force)>;
+
 // Relaxes x in place until max_i |f_i| <= force_tolerance or max_iterations steps.
 // x.size() must be a multiple of block_size. Deterministic: the same x and forces give the
 // same path, whatever the thread count. Cost per iteration: one force evaluation plus
 // O(size) vector work.
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& parameters,
-                const FireProgress& progress = {}, long progress_every = 1000);
+                const FireProgress& progress = {}, long progress_every = 1000, const FireAdjust& adjust = {});
 
 // From this many coordinates on, FIRE's vector passes run on all threads, over kFireChunks
 // fixed chunks whose sums are added in order: the same path for any thread count.

@@ -93,10 +93,9 @@ struct HingeArrays {
   }
 }
 
-[[gnu::target_clones("avx2", "default")]] void hinge_forces(const HingeArrays A, double* const* out, long begin,
+[[gnu::target_clones("avx2", "default")]] void hinge_forces(const HingeArrays A, const CornerForces& out, long begin,
                                                             long end) {
-  double* F[4];  // local copies: the stores below cannot change them
-  for (int k = 0; k < 4; ++k) F[k] = out[k];
+  const CornerForces F = out;  // a local copy: the stores below cannot change it
   const int* corners[4] = {A.q0, A.q1, A.q2, A.q3};
   alignas(64) double P[12 * kTile], O[12 * kTile];
   for (long t0 = begin; t0 < end; t0 += kTile) {
@@ -175,8 +174,7 @@ void DihedralHinges::add_gradient(std::span<const double> x, std::span<double> g
   check_sizes(x, g);
   const HingeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), assembly_.corner(2), assembly_.corner(3),
                       kappa_.data(), cos0_.data(), sin0_.data()};
-  double* F[4];
-  for (int k = 0; k < 4; ++k) F[k] = assembly_.corner_forces(k);
+  const CornerForces F = assembly_.corner_forces();
   assembly_.assemble([&](long begin, long end) { hinge_forces(A, F, begin, end); }, g.data());
 }
 

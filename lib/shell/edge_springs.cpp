@@ -19,19 +19,18 @@ struct EdgeArrays {
   const double *rest, *k;
 };
 
-void spring_forces(const EdgeArrays A, double* const* out, long begin,
-                                                             long end) {
-  double* F[2];  // local copies: the stores below cannot change them
-  for (int k = 0; k < 2; ++k) F[k] = out[k];
+void spring_forces(const EdgeArrays A, const CornerForces& out, long begin, long end) {
+  const CornerForces F = out;  // a local copy: the stores below cannot change it
   for (long e = begin; e < end; ++e) {
     const double* a = A.x + 3 * A.q0[e];
     const double* b = A.x + 3 * A.q1[e];
     const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const double s = A.k[e] * (1.0 - A.rest[e] / l);  // dE/dl / l
+    double *f0 = F.at(0, e), *f1 = F.at(1, e);
     for (int r = 0; r < 3; ++r) {
-      F[0][3 * e + r] = -s * d[r];
-      F[1][3 * e + r] = s * d[r];
+      f0[r] = -s * d[r];
+      f1[r] = s * d[r];
     }
   }
 }
@@ -121,8 +120,7 @@ double EdgeSprings::energy(std::span<const double> x) const {
 void EdgeSprings::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   const EdgeArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), rest_.data(), k_.data()};
-  double* F[2];
-  for (int k = 0; k < 2; ++k) F[k] = assembly_.corner_forces(k);
+  const CornerForces F = assembly_.corner_forces();
   assembly_.assemble([&](long begin, long end) { spring_forces(A, F, begin, end); }, g.data());
 }
 

@@ -18,6 +18,8 @@ void RelaxParameters::validate() const {
   require(mass_factor > 0 && std::isfinite(mass_factor), "the mass factor must be positive");
   require(volume_tolerance > 0, "the volume tolerance must be positive");
   require(max_volume_updates >= 0, "the number of volume updates must not be negative");
+  require(volume_update_factor >= 1, "the volume update factor must be at least 1");
+  require(volume_update_interval >= 1, "the volume update interval must be at least 1");
 }
 
 double default_force_scale(const mesh::TriMesh& rest, double youngs_modulus, double thickness) {
@@ -67,15 +69,31 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
 
 namespace {
 
-// One FIRE run on s.x; adds to r.
+// One FIRE run on s.x; adds to r. With a constant-volume pressure, Pi moves inside it (relax.hpp).
 void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress) {
   minimise::FireParameters fp = p.fire;
   fp.force_tolerance = p.relative_tolerance * p.force_scale;
   fp.mass = mass;
   const long before = r.iterations;
+  TurgorPressure* pressure = s.pressure();
+  minimise::FireAdjust adjust;
+  long last_check = 0;
+  if (pressure && pressure->control() == PressureControl::ConstantVolume) {
+    const double loose = p.volume_update_factor * fp.force_tolerance;
+    adjust = [&, pressure, loose](long it, double max_force) {
+      if (!(max_force <= loose) || r.volume_updates >= p.max_volume_updates) return false;
+      if (max_force > fp.force_tolerance && it - last_check < p.volume_update_interval) return false;
+      last_check = it;
+      if (!(pressure->volume_error(span_of(s.x)) > p.volume_tolerance)) return false;
+      pressure->update_turgor_towards_targets(span_of(s.x));
+      ++r.volume_updates;
+      return true;
+    };
+  }
   const auto res = minimise::fire(
       s.x, [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) { s.forces(y, f); }, fp,
-      [&](long it, double max_force) { return !progress || progress(before + it, max_force / p.force_scale); }, 200);
+      [&](long it, double max_force) { return !progress || progress(before + it, max_force / p.force_scale); }, 200,
+      adjust);
   r.iterations += res.iterations;
   r.force_evaluations += res.force_evaluations;
   r.residual = res.max_force / p.force_scale;
@@ -97,6 +115,7 @@ RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress&
   TurgorPressure* pressure = s.pressure();
   if (!pressure || pressure->control() != PressureControl::ConstantVolume || !r.converged()) return r;
   r.volume_error = pressure->volume_error(span_of(s.x));
+  // FIRE converged with a volume off only when the updates ran out: the thesis's loop.
   while (r.volume_error > p.volume_tolerance) {
     if (r.volume_updates >= p.max_volume_updates) {
       r.stop = RelaxStop::VolumeUpdates;

@@ -11,7 +11,13 @@
 //
 // Constant volume (TurgorPressure with PressureControl::ConstantVolume, 5.2.1): relax, and
 // while some shell is off its target volume by more than 0.1 %, update its Pi by
-// Pi <- Pi (1 + (V0 - V)/V) and relax again.
+// Pi <- Pi (1 + (V0 - V)/V) and relax again. The same fixed point is reached with far fewer
+// iterations when Pi moves while x relaxes: once FIRE's residual is below
+// volume_update_factor times the force tolerance (x near equilibrium for the current Pi, so
+// V answers to it), the volumes are checked every volume_update_interval iterations and at
+// convergence, and a shell off by more than the tolerance gets the update there and then.
+// FIRE stops only at the force tolerance with every volume within its tolerance (or a whole
+// relaxation follows, as in the thesis's loop), and every Pi update counts in volume_updates.
 //
 // Dynamics: Heun's method (explicit trapezoid, the thesis's integrator for B.5) of
 // mu dx/dt = F(x), mu the damping coefficient (the thesis fixes mu = 1).
@@ -31,6 +37,8 @@ struct RelaxParameters {
   double mass_factor = 1.0;          // FIRE mass = this * lambda_max * (dt_max / 1.5)^2: dt_max stable with margin 4/3
   double volume_tolerance = 1e-3;    // constant volume: |V - V0| <= this * V0
   int max_volume_updates = 500;      // constant volume: Pi updates before giving up
+  double volume_update_factor = 100; // constant volume: Pi moves inside FIRE once max|f_i| <= this * the tolerance
+  int volume_update_interval = 20;   // ... checked every this many FIRE iterations (and at convergence)
   // Throws cmp::UsageError naming the first bad field.
   void validate() const;
 };

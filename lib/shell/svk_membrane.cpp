@@ -2,6 +2,7 @@
 
 #include "shell/rest_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cmp::shell {
@@ -42,22 +43,49 @@ struct Strains {
   return s;
 }
 
-void svk_forces(const SvkArrays A, double* const* out, long begin, long end) {
-  double* F[3];  // local copies: the stores below cannot change them
-  for (int k = 0; k < 3; ++k) F[k] = out[k];
-  for (long t = begin; t < end; ++t) {
-    const Strains s = strains(A, t);
-    const double* d = s.d;
+// The force pass on one tile (element_assembly.hpp): each lane does exactly the operations of
+// strains() and the scalar formula in the same order, so the same bits as one triangle at a time.
+[[gnu::always_inline]] inline void svk_tile(const SvkArrays& A, long t0, const double* __restrict P,
+                                            double* __restrict O, int m) {
+  const double *L0 = A.L0 + t0, *L1 = A.L1 + t0, *L2 = A.L2 + t0;
+  const double *k0 = A.k0 + t0, *k1 = A.k1 + t0, *k2 = A.k2 + t0;
+  const double *c0 = A.c0 + t0, *c1 = A.c1 + t0, *c2 = A.c2 + t0;
+  for (int l = 0; l < m; ++l) {
+    const auto p = [&](int row) { return P[row * kTile + l]; };
+    // Edge vectors e_i = (corner i+2) - (corner i+1).
+    const double e0x = p(6) - p(3), e0y = p(7) - p(4), e0z = p(8) - p(5);
+    const double e1x = p(0) - p(6), e1y = p(1) - p(7), e1z = p(2) - p(8);
+    const double e2x = p(3) - p(0), e2y = p(4) - p(1), e2z = p(5) - p(2);
+    const double d0 = e0x * e0x + e0y * e0y + e0z * e0z - L0[l];
+    const double d1 = e1x * e1x + e1y * e1y + e1z * e1z - L1[l];
+    const double d2 = e2x * e2x + e2y * e2y + e2z * e2z - L2[l];
     // dE/d(l_i^2), times 2 for d(l_i^2)/d(end) = 2 e_i.
-    const double w0 = A.k0[t] * d[0] + A.c2[t] * d[1] + A.c1[t] * d[2];
-    const double w1 = A.k1[t] * d[1] + A.c2[t] * d[0] + A.c0[t] * d[2];
-    const double w2 = A.k2[t] * d[2] + A.c1[t] * d[0] + A.c0[t] * d[1];
+    const double w0 = k0[l] * d0 + c2[l] * d1 + c1[l] * d2;
+    const double w1 = k1[l] * d1 + c2[l] * d0 + c0[l] * d2;
+    const double w2 = k2[l] * d2 + c1[l] * d0 + c0[l] * d1;
     // Edge i runs from corner i+1 to corner i+2: +w_i e_i on its head, -w_i e_i on its tail.
-    for (int r = 0; r < 3; ++r) {
-      F[0][3 * t + r] = w1 * s.e[1][r] - w2 * s.e[2][r];
-      F[1][3 * t + r] = w2 * s.e[2][r] - w0 * s.e[0][r];
-      F[2][3 * t + r] = w0 * s.e[0][r] - w1 * s.e[1][r];
-    }
+    O[0 * kTile + l] = w1 * e1x - w2 * e2x;
+    O[1 * kTile + l] = w1 * e1y - w2 * e2y;
+    O[2 * kTile + l] = w1 * e1z - w2 * e2z;
+    O[3 * kTile + l] = w2 * e2x - w0 * e0x;
+    O[4 * kTile + l] = w2 * e2y - w0 * e0y;
+    O[5 * kTile + l] = w2 * e2z - w0 * e0z;
+    O[6 * kTile + l] = w0 * e0x - w1 * e1x;
+    O[7 * kTile + l] = w0 * e0y - w1 * e1y;
+    O[8 * kTile + l] = w0 * e0z - w1 * e1z;
+  }
+}
+
+[[gnu::target_clones("avx2", "default")]] void svk_forces(const SvkArrays A, const CornerForces& out, long begin,
+                                                          long end) {
+  const CornerForces F = out;  // a local copy: the stores below cannot change it
+  const int* corners[3] = {A.q0, A.q1, A.q2};
+  alignas(64) double P[9 * kTile], O[9 * kTile];
+  for (long t0 = begin; t0 < end; t0 += kTile) {
+    const int m = static_cast<int>(std::min<long>(kTile, end - t0));
+    load_tile<3>(A.x, corners, t0, m, P);
+    svk_tile(A, t0, P, O, m);
+    store_tile<3>(O, F, t0, m);
   }
 }
 
@@ -115,8 +143,7 @@ double SvkMembrane::energy(std::span<const double> x) const {
 void SvkMembrane::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   const SvkArrays A = arrays(assembly_, rest_l2_, k_, c_, x.data());
-  double* F[3];
-  for (int k = 0; k < 3; ++k) F[k] = assembly_.corner_forces(k);
+  const CornerForces F = assembly_.corner_forces();
   assembly_.assemble([&](long begin, long end) { svk_forces(A, F, begin, end); }, g.data());
 }
 

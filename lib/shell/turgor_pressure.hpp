@@ -67,6 +67,7 @@ class TurgorPressure final : public EnergyTerm {
   long vertex_count_;
   std::vector<int> corners_, face_shell_;
   std::vector<double> turgor_, target_;
+  mutable std::vector<double> scale_;  // -Pi/6 per shell, for the gradient pass
   ElementAssembly assembly_;
 };
 

@@ -71,6 +71,27 @@ TEST_CASE("FIRE stops at the iteration cap and when the progress callback says s
   CHECK(r.iterations == 30);
 }
 
+TEST_CASE("FIRE's adjust hook may move the force field mid-run: forces are re-evaluated, the run ends at the new minimum") {
+  Bowl bowl(30);
+  const Eigen::VectorXd first = bowl.centre;
+  FireParameters p;
+  p.force_tolerance = 1e-13;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(30);
+  int moves = 0;
+  // Move the centre once the run is near the first minimum (and never again).
+  const auto r = fire(x, [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) { bowl(y, f); }, p, {}, 1000,
+                      [&](long, double max_force) {
+                        if (moves > 0 || max_force > 1e-6) return false;
+                        bowl.centre = first * 0.5;
+                        ++moves;
+                        return true;
+                      });
+  CHECK(moves == 1);
+  CHECK(r.converged());
+  CHECK(r.force_evaluations == r.iterations + 2);  // the start, one per iteration, one after the move
+  CHECK((x - 0.5 * first).cwiseAbs().maxCoeff() < 1e-9);
+}
+
 TEST_CASE("FIRE follows the thesis's time step rules") {
   // On a single stiff coordinate the power turns negative at the first overshoot: the step is
   // then cut by f_dec and the velocity zeroed, and the run still converges.
