@@ -118,7 +118,7 @@ void contacts(int level) {
     std::printf("gradient_hertz_vertices_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * ts / n,
                 spheres.touches(x).size());
     std::printf("gradient_hertz_faces_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * tf / n,
-                faces.contacts(x).size());
+                faces.touches(x).size());
   }
 }
 

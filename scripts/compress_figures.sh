@@ -25,14 +25,18 @@ high_n=${COMPRESS_HIGH_N:-16}
 high_phi=${COMPRESS_HIGH_PHI:-0.95}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin="$build/bin"
+# start DIR N: a jammed packing of N spheres and the cell in DIR, no packings of an earlier run.
+start() {
+  mkdir -p "$1"
+  "$bin/shellpack" jam -N "$2" --seed "$seed" -q -o "$1/jam.xyz" --csv "$1/jam.csv"
+  "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$1/cell.off"
+  rm -f "$1"/pack_*.off
+}
 runs="" labels=""
 for n in $sizes; do
   dir="$out/compress/N$n"
-  mkdir -p "$dir"
   echo "== N = $n: shellpack jam, rndmesh icosa --level $level, shellpack compress" >&2
-  "$bin/shellpack" jam -N "$n" --seed "$seed" -q -o "$dir/jam.xyz" --csv "$dir/jam.csv"
-  "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$dir/cell.off"
-  rm -f "$dir"/pack_*.off
+  start "$dir" "$n"
   "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact "$contact" \
     --dphi 0.001,0.01,0.05,0.1,0.15,0.2,0.25,0.3 -o "$dir/pack_{phi}.off" -q >"$dir/compress.csv"
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
@@ -68,11 +72,8 @@ fi
 # Towards confluence with hertz-faces: phi, Z, turgor, shapes and Voronoi facets per target.
 if [ "$high_n" -gt 0 ]; then
   dir="$out/compress/faces$high_n"
-  mkdir -p "$dir"
   echo "== towards confluence: $high_n shells, hertz-faces, to phi = $high_phi" >&2
-  "$bin/shellpack" jam -N "$high_n" --seed "$seed" -q -o "$dir/jam.xyz" --csv "$dir/jam.csv"
-  "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$dir/cell.off"
-  rm -f "$dir"/pack_*.off
+  start "$dir" "$high_n"
   "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact hertz-faces \
     --phi "0.6:$high_phi:0.05" -o "$dir/pack_{phi}.off" --timings -q >"$dir/compress.csv"
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"

@@ -49,16 +49,23 @@ void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool
   list_valid_ = false;
 }
 
+namespace {
+// The periods of the minimum image (0 along an open axis) and their inverses.
+void periods_of(const std::optional<ShellContactTerm::BoxSides>& box, double periods[3], double inverse[3]) {
+  for (int a = 0; a < 3; ++a) {
+    const bool wraps = box && box->periodic[a];
+    periods[a] = wraps ? box->lengths[a] : 0.0;
+    inverse[a] = wraps ? 1.0 / box->lengths[a] : 0.0;
+  }
+}
+}  // namespace
+
 void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
   double periods[3], inverse[3];
-  for (int a = 0; a < 3; ++a) {
-    const bool wraps = box_ && box_->periodic[a];
-    periods[a] = wraps ? box_->lengths[a] : 0.0;
-    inverse[a] = wraps ? 1.0 / box_->lengths[a] : 0.0;
-  }
+  periods_of(box_, periods, inverse);
   const double* X = scratch_.data();
   // reach_ per vertex: delta + the longest edge of its triangles (minimum image: a shell may
   // straddle a periodic face) / sqrt(3).
@@ -143,11 +150,7 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   if (!candidates_hold(x)) build_candidates(x);
 
   double periods[3], inverse[3];
-  for (int a = 0; a < 3; ++a) {
-    const bool wraps = box_ && box_->periodic[a];
-    periods[a] = wraps ? box_->lengths[a] : 0.0;
-    inverse[a] = wraps ? 1.0 / box_->lengths[a] : 0.0;
-  }
+  periods_of(box_, periods, inverse);
   const double* X = x.data();
   const double delta2 = delta_ * delta_;
   // Each candidate triangle's bounding sphere (centroid, largest corner distance): most
@@ -232,21 +235,6 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
         for (int k = 0; k < 3; ++k) G[3 * corner[k] + a] -= r.w[k] * gp;
       }
     }
-}
-
-std::vector<VertexFaceContacts::Contact> VertexFaceContacts::contacts(std::span<const double> x) const {
-  check_sizes(x);
-  collect(x);
-  std::vector<Contact> out;
-  for (const auto& chunk : records_)
-    for (const Record& r : chunk) {
-      const int* corner = faces_.data() + 3 * r.face;
-      const int k = static_cast<int>(std::max_element(r.w, r.w + 3) - r.w);
-      const double h = delta_ - r.r;
-      out.push_back({r.i, corner[k], Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(h, estar_, rstar_),
-                     r.face, Eigen::Vector3d(r.w[0], r.w[1], r.w[2])});
-    }
-  return out;
 }
 
 std::vector<ShellContactTerm::Touch> VertexFaceContacts::touches(std::span<const double> x) const {

@@ -77,22 +77,9 @@ class VertexFaceContacts final : public ShellContactTerm {
   }
   const std::optional<BoxSides>& box() const override { return box_; }
 
-  // One contact: vertex i against a triangle `face` of another shell within delta. d = p - q
-  // (minimum image; q = sum_k weights[k] x_{F(face, k)}, taken in p's image), r = |d|, the
-  // overlap h = delta - r > 0 and the repulsive force magnitude along d (on p; the triangle's
-  // corners take -force d/r split by the weights). j is the corner of the face with the
-  // largest weight, so that (i, j, d, r, force) reads as for vertex spheres; the exact lever
-  // arm for a virial is q = x_j + (q - x_j), not x_j.
-  struct Contact {
-    int i, j;
-    Eigen::Vector3d d;
-    double r, overlap, force;
-    int face;
-    Eigen::Vector3d weights;
-  };
-  // Every contact (vertex, triangle within delta) at x, vertex by vertex (ascending), triangles ascending.
-  std::vector<Contact> contacts(std::span<const double> x) const;
-  // The same contacts as the common interface takes them (corners and weights of the face).
+  // Every contact (vertex i, a triangle of another shell within delta) at x, vertex by vertex
+  // (ascending), triangles ascending: corners the triangle's, weights those of its point q
+  // closest to x_i, d = x_i - q (minimum image), r = |d|, overlap = delta - r.
   std::vector<Touch> touches(std::span<const double> x) const override;
   // 1 for every vertex in a contact at x: the pushed vertex and the corners of the triangle
   // with a positive weight.

@@ -15,6 +15,7 @@
 
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -63,19 +64,19 @@ void check_probe(const Vector3d& p, const Vector3d& closest, const Vector3d& wei
   const ContactParameters c = parameters(delta);
   const VertexFaceContacts term(mesh, c);
   const auto x = fx::state(mesh.V);
-  const auto contacts = term.contacts(x);
+  const auto contacts = term.touches(x);
   const bool corner = weights.maxCoeff() == 1.0;
   REQUIRE(contacts.size() == (corner ? 2u : 1u));
   const auto& k = contacts.back();  // vertices in ascending order: the probe (3) comes last
   const double r = (p - closest).norm();
   CHECK(k.i == 3);
-  CHECK(k.face == 0);
+  CHECK(k.corners == std::array<int, 3>{0, 1, 2});  // triangle A
   CHECK(k.r == Approx(r).epsilon(1e-14));
   CHECK((k.d - (p - closest)).norm() < 1e-14);
   CHECK((k.weights - weights).norm() < 1e-14);
   if (corner) {
-    CHECK(contacts[0].face == 1);
-    CHECK(contacts[0].j == 3);
+    CHECK(contacts[0].corners == std::array<int, 3>{3, 4, 5});  // A's corner against B at the probe
+    CHECK(contacts[0].weights == Vector3d(1, 0, 0));
     CHECK((contacts[0].d + k.d).norm() < 1e-14);
   }
   const double h = delta - r, estar = c.vertex_effective_modulus();
@@ -127,7 +128,7 @@ TEST_CASE("hertz-faces: one vertex over a triangle's interior, edge and corner",
   // Out of reach: no contact, no energy.
   const auto far = probe_mesh({0.2, 0.3, 0.1001});
   const VertexFaceContacts term(far, parameters(0.1));
-  CHECK(term.contacts(fx::state(far.V)).empty());
+  CHECK(term.touches(fx::state(far.V)).empty());
   CHECK(term.energy(fx::state(far.V)) == 0.0);
 }
 
@@ -197,7 +198,7 @@ TEST_CASE("hertz-faces: contacts through the periodic faces of the box", "[shell
   for (int v = 0; v < 3; ++v) x[3 * v] -= L, x[3 * v + 1] += 2 * L;
   CHECK(open.energy(x) == 0.0);
   CHECK(periodic.energy(x) == Approx(e).epsilon(1e-12));
-  const auto k = periodic.contacts(x);
+  const auto k = periodic.touches(x);
   REQUIRE(k.size() == 1);
   CHECK((k[0].d - Vector3d(0, 0, 0.05)).norm() < 1e-12);
   // Along the non-periodic z the image does not count.
@@ -232,16 +233,16 @@ TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
     omp_set_num_threads(1);
     const double e1 = term.energy(x);
     const auto g1 = gradient(term, x);
-    const auto k1 = term.contacts(x);
+    const auto k1 = term.touches(x);
     omp_set_num_threads(2);
     const double e2 = term.energy(x);
     const auto g2 = gradient(term, x);
-    const auto k2 = term.contacts(x);
+    const auto k2 = term.touches(x);
     CHECK(e1 > 0);
     CHECK(e1 == e2);
     CHECK(g1 == g2);
     REQUIRE(k1.size() == k2.size());
-    for (std::size_t i = 0; i < k1.size(); ++i) CHECK((k1[i].i == k2[i].i && k1[i].face == k2[i].face && k1[i].r == k2[i].r));
+    for (std::size_t i = 0; i < k1.size(); ++i) CHECK((k1[i].i == k2[i].i && k1[i].corners == k2[i].corners && k1[i].r == k2[i].r));
   }
   omp_set_num_threads(saved);
 }
