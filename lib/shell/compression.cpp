@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <limits>
 
@@ -257,19 +259,23 @@ CompressionRow Compression::observe() const {
   // Shell centres (vertex centroids) for the molecular virial.
   const std::vector<Eigen::Vector3d> centre = centroids();
   const auto& shell_of = system_.contacts()->vertex_shells();
-  // Contacts: touching shell pairs, and the virial sum_contacts F_ij . (c_I - c_J), with the
+  // Contacts: touching shell pairs, each periodic image of the other shell its own contact (in
+  // a small box a shell touches a neighbour and that neighbour's image: two contacts, as
+  // `shellpack analyze` counts them); and the virial sum_contacts F_ij . (c_I - c_J), with the
   // centres' separation taken through the contact's own image: d - (x_i - c_I) + (q - c_J),
   // q the pushing point (a vertex, or the closest point of a triangle) in J's own frame.
-  std::vector<char> touch(static_cast<std::size_t>(n) * n, 0);
+  std::set<std::array<int, 5>> touching;  // I < J, J's image seen from I
   double virial = 0;
   for (const auto& c : system_.contacts()->touches(span_of(x))) {
-    const int I = shell_of[c.i], J = shell_of[c.corners[0]];
-    touch[static_cast<std::size_t>(I) * n + J] = touch[static_cast<std::size_t>(J) * n + I] = 1;
-    const Eigen::Vector3d R = c.d - (x.segment<3>(3 * c.i) - centre[I]) + (touch_point(c, span_of(x)) - centre[J]);
+    int I = shell_of[c.i], J = shell_of[c.corners[0]];
+    Eigen::Vector3i k = touch_image(c, span_of(x), box_, packing_.periodic);
+    if (I > J) std::swap(I, J), k = -k;
+    touching.insert({I, J, k[0], k[1], k[2]});
+    const Eigen::Vector3d R = c.d - (x.segment<3>(3 * c.i) - centre[shell_of[c.i]]) +
+                              (touch_point(c, span_of(x)) - centre[shell_of[c.corners[0]]]);
     if (c.r > 0) virial += c.force * c.d.dot(R) / c.r;
   }
-  for (int I = 0; I < n; ++I)
-    for (int J = I + 1; J < n; ++J) row.contacts += touch[static_cast<std::size_t>(I) * n + J];
+  row.contacts = static_cast<long>(touching.size());
   row.Z = 2.0 * static_cast<double>(row.contacts) / n;
   row.dZ = row.Z - (6.0 - 4.0 / n);
   row.pressure = virial / (3.0 * box_.prod()) / options_.model.material.youngs_modulus;

@@ -61,7 +61,7 @@ struct CompressionRow {
   double pressure = 0;          // contact virial pressure [units of E]
   double turgor_mean = 0, turgor_cv = 0;  // <Pi>/Pi_0 and sigma(Pi)/<Pi>
   double Z = 0, dZ = 0;         // contact number and Z - (6 - 4/N)
-  long contacts = 0;            // touching shell pairs
+  long contacts = 0;            // contacts: touching shell pairs, each periodic image apart
   double asphericity = 0;       // mean b = l1^2 - (l2^2 + l3^2)/2 [D_0^2]
   double delta_eps = 0;         // mean l1/l3 - 1
   double volume_error = 0;      // max_i |V_i - V0_i| / V0_i

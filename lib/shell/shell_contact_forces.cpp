@@ -63,12 +63,7 @@ std::vector<ShellContact> shell_contacts(const mesh::VertexMatrix& V, const mesh
     const int m = shell_of[t.i], n = shell_of[t.corners[0]];
     if (m == n || m < 0 || n < 0) continue;
     const Eigen::Vector3d f = (t.force / t.r) * t.d;  // on i, along d = x_i - q
-    // The image of n seen from m: d = x_i - q + k L (q of unwrapped positions) means n's
-    // vertices sit at their positions - k L.
-    const Eigen::Vector3d q_own = touch_point(t, x);
-    Eigen::Vector3i k = Eigen::Vector3i::Zero();
-    for (int a = 0; a < 3; ++a)
-      if (box.periodic[a]) k[a] = -static_cast<int>(std::lround((t.d[a] - (V(t.i, a) - q_own[a])) / box.lengths[a]));
+    const Eigen::Vector3i k = touch_image(t, x, box.lengths, box.periodic);  // n's image seen from m
     add(t.i, m, n, k, f, true);
     bool counted = false;  // the touch counts once in each direction
     for (int c = 0; c < 3; ++c)

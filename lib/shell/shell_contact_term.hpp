@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
@@ -57,6 +58,18 @@ inline Eigen::Vector3d touch_point(const ShellContactTerm::Touch& t, std::span<c
   for (int k = 0; k < 3; ++k)
     if (t.corners[k] >= 0) q += t.weights[k] * Eigen::Vector3d(x[3 * t.corners[k]], x[3 * t.corners[k] + 1], x[3 * t.corners[k] + 2]);
   return q;
+}
+
+// The periodic image of the other shell, in box vectors, that a touch reaches from x_i's shell:
+// d = x_i - q + k L for q in the other shell's own frame means that shell's image sits at its
+// stored positions - k L. Zero along the axes that are not periodic.
+inline Eigen::Vector3i touch_image(const ShellContactTerm::Touch& t, std::span<const double> x,
+                                   const Eigen::Vector3d& lengths, const std::array<bool, 3>& periodic) {
+  const Eigen::Vector3d q = touch_point(t, x);
+  Eigen::Vector3i k = Eigen::Vector3i::Zero();
+  for (int a = 0; a < 3; ++a)
+    if (periodic[a]) k[a] = -static_cast<int>(std::lround((t.d[a] - (x[3 * t.i + a] - q[a])) / lengths[a]));
+  return k;
 }
 
 }  // namespace cmp::shell

@@ -1,5 +1,7 @@
 // Shells built from a sphere packing, and the check that they do not pass through each other.
+#include "shell/compression.hpp"
 #include "shell/penetration.hpp"
+#include "shell/shell_contact_forces.hpp"
 #include "shell/shell_packing.hpp"
 
 #include "shell_fixtures.hpp"
@@ -103,4 +105,41 @@ TEST_CASE("penetrations: a vertex inside another shell is found, also through th
   CHECK(near.front().vertex_shell == 1);
   CHECK(penetrations(at(3.1), m.F, shells, std::nullopt).empty());  // open space: 3.1 apart
   CHECK(penetrations(at(3.1), m.F, shells, box).size() == near.size());  // periodic: 1.5 apart
+}
+
+TEST_CASE("compress's Z and analyze's contacts count every periodic image of a neighbour", "[shell][packing]") {
+  // Two shells on a body-centred cubic lattice of one cell: each faces the other's eight images
+  // across the box, 0.002 D0 apart (inside the contact reach of both laws). A count of
+  // touching pairs would give Z = 1; each image is a contact of its own: Z = 8.
+  const auto cell = normalised_cell(fx::perturbed_icosphere(3, 0.0, 1, 1.0), "cell.off");
+  cmp::io::SpherePackingFrame spheres;
+  const double L = 1.1, envelope = 0.02;
+  spheres.box = Eigen::Vector3d::Constant(L);
+  spheres.centres.resize(2, 3);
+  spheres.centres << 0, 0, 0, L / 2, L / 2, L / 2;
+  spheres.radii = Eigen::VectorXd::Constant(2, 0.5);
+  const double gap = 0.002, distance = L * std::sqrt(3.0) / 2 * (1 + envelope);  // centres [D0]
+  for (const char* style : {"hertz-faces", "hertz-vertices"}) {
+    INFO(style);
+    CompressionOptions o;
+    o.model.pressure = "volume";
+    o.model.material = {1.0, 0.5, 0.02};
+    o.model.shell_contact_style = style;
+    o.model.contact.contact_distance = envelope;
+    o.model.contact.vertex_radius = 0.06;
+    o.targets = {0.9};
+    const Compression run(place_shells(spheres, cell, distance - gap, envelope, 1), o);
+    const CompressionRow row = run.observe();
+    CHECK(row.contacts == 8);
+    CHECK(row.Z == 8.0);
+    CHECK(row.pressure > 0);
+    const auto& s = run.system();
+    const cmp::mesh::VertexMatrix V = Eigen::Map<const cmp::mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
+    cmp::neighbours::Box box;
+    box.lengths = run.box();
+    box.periodic = {true, true, true};
+    const auto contacts = shell_contacts(V, s.rest().F, {0, static_cast<int>(cell.V.rows()), 2 * static_cast<int>(cell.V.rows())},
+                                         box, o.model.contact, style);
+    CHECK(contacts_per_shell(contacts, 2) == std::vector<int>{8, 8});
+  }
 }
