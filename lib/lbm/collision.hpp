@@ -25,7 +25,7 @@ struct CollisionParameters {
                                 // the bounce-back wall exactly half-way for Poiseuille flow, for every tau
 };
 
-// One contiguous range of nodes swept by one fused stream-collide step (lbm/flow_solver.cpp).
+// One contiguous range of nodes swept by one fused stream-collide step (lbm/flow_step.cpp).
 template <class Real>
 struct SweepRange {
   Real* f;                          // populations, laid out as lbm/layout.hpp says
