@@ -33,6 +33,8 @@ struct SweepRange {
   long begin, end;                  // node range, multiples of the kernel's batch size
   bool odd;                         // AA-pattern parity of this step
   const double* force;              // body force (3 values) or nullptr
+  const std::uint32_t* consecutive = nullptr;  // per block (node / kBatch): consecutive_lines()
+                                               // (lbm/layout.hpp), or nullptr: gather and scatter every line
 };
 
 class CollisionOperator {

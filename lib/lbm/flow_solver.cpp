@@ -71,7 +71,7 @@ double FlowSolver::bytes_per_fluid_node() const {
   const Impl& m = *impl_;
   const double pop = m.settings.precision == Precision::kFloat ? sizeof(float) : sizeof(double);
   const double total = static_cast<double>(m.stride) * (kQ * pop + 18 * sizeof(std::uint32_t)) +
-                       m.site.size() * sizeof(long) + m.open.size() * sizeof(PressureNode) + m.walls.size() * sizeof(WallLink);
+                       m.consecutive.size() * sizeof(std::uint32_t) + m.site.size() * sizeof(long) + m.open.size() * sizeof(PressureNode) + m.walls.size() * sizeof(WallLink);
   return total / static_cast<double>(m.fluid);
 }
 

@@ -52,6 +52,8 @@ struct FlowSolver::Impl {
   long fluid = 0, stride = 0, steps = 0;
   std::vector<long> site;              // fluid node -> grid index
   BigVector<std::uint32_t> links;     // 18 * (stride + padding)
+  std::vector<std::uint32_t> consecutive;  // per block: consecutive_lines() (empty when no chunk uses it)
+  std::vector<char> chunk_consecutive;     // per chunk: whether its odd sweeps use `consecutive`
   BigVector<double> fd;                // populations (double storage)
   BigVector<float> ff;                 // populations (float storage)
   std::vector<PressureNode> open;
@@ -76,8 +78,8 @@ struct FlowSolver::Impl {
   }
 
   // link_table.cpp: numbers the fluid nodes (site, fluid, stride, chunks), fills the link
-  // table, the pressure-plane nodes and wall_links; returns the wall links that need
-  // interpolation.
+  // table, the pressure-plane nodes, wall_links and the consecutive lines; returns the wall
+  // links that need interpolation.
   std::vector<WallFraction> build_link_table(const PoreLattice& lattice);
   // interpolated_walls.cpp
   void build_walls(const std::vector<WallFraction>& fractions);

@@ -12,7 +12,8 @@ void FlowSolver::Impl::step_once() {
   const bool odd = (steps & 1) != 0;
   const double* g = settings.driving == Driving::kBodyForce ? force : nullptr;
   for_each_chunk(chunks, [&](int c) {
-    SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g};
+    SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g,
+                       chunk_consecutive[static_cast<std::size_t>(c)] ? consecutive.data() : nullptr};
     op->sweep(r);
   });
   apply_pressure_planes(F.data(), odd);

@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 
 namespace cmp::lbm {
@@ -81,6 +82,23 @@ std::vector<WallFraction> FlowSolver::Impl::build_link_table(const PoreLattice& 
       }
     }
   }
+  // Lines the odd sweep may move as one vector, used by the chunks where they are common
+  // (below a quarter of the lines the branch costs more than they save: lbm/sweep_kernel.hpp).
+  constexpr double kMinConsecutiveShare = 0.25;
+  consecutive.resize(static_cast<std::size_t>(N / kBatch));
+  for (long block = 0; block < N / kBatch; ++block)
+    consecutive[static_cast<std::size_t>(block)] = consecutive_lines(links.data(), block * kBatch);
+  chunk_consecutive.assign(static_cast<std::size_t>(chunks), 0);
+  for (int c = 0; c < chunks; ++c) {
+    long lines = 0, moved = 0;
+    for (long block = chunk_start(c) / kBatch; block < chunk_start(c + 1) / kBatch; ++block) {
+      lines += kQ - 1;
+      moved += std::popcount(consecutive[static_cast<std::size_t>(block)]);
+    }
+    chunk_consecutive[static_cast<std::size_t>(c)] = moved >= kMinConsecutiveShare * static_cast<double>(lines);
+  }
+  if (std::find(chunk_consecutive.begin(), chunk_consecutive.end(), 1) == chunk_consecutive.end())
+    std::vector<std::uint32_t>().swap(consecutive);
   return pending;
 }
 
