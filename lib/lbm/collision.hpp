@@ -25,7 +25,7 @@ struct CollisionParameters {
                                 // the bounce-back wall exactly half-way for Poiseuille flow, for every tau
 };
 
-// One contiguous range of nodes swept by one fused stream-collide step (lbm/flow_solver.cpp).
+// One contiguous range of nodes swept by one fused stream-collide step (lbm/flow_step.cpp).
 template <class Real>
 struct SweepRange {
   Real* f;                          // populations, laid out as lbm/layout.hpp says
@@ -33,6 +33,8 @@ struct SweepRange {
   long begin, end;                  // node range, multiples of the kernel's batch size
   bool odd;                         // AA-pattern parity of this step
   const double* force;              // body force (3 values) or nullptr
+  const std::uint32_t* consecutive = nullptr;  // per block (node / kBatch): consecutive_lines()
+                                               // (lbm/layout.hpp), or nullptr: gather and scatter every line
 };
 
 class CollisionOperator {

@@ -7,14 +7,17 @@
 // neighbour n + c_q is fluid, slot (opposite(q), n) when it is solid (half-way bounce-back)
 // or outside the box along the flow axis (pressure driving, below). Solid nodes cost
 // nothing. Memory: 19 populations (8 bytes, or 4 with Precision::kFloat) + 18 links of 4
-// bytes per fluid node (bytes_per_fluid_node()).
+// bytes per fluid node, + 4 bytes per 8 nodes on lattices with many consecutive link lines
+// (below) (bytes_per_fluid_node()).
 //
 // Time stepping: fused stream + collide in place, the AA pattern (Bailey et al. 2009): even
 // steps read a node's own slots and write the post-collision populations back reversed;
-// odd steps gather through the link table and scatter back through it. Every slot is read
+// odd steps gather through the link table and scatter back through it (in the node chunks
+// where at least a quarter of the link lines hold 8 consecutive slots, as on dense boxes, such
+// lines move as one vector: lbm/layout.hpp consecutive_lines()). Every slot is read
 // and written by one node per step, so one array suffices, nodes may run in any order on
 // any thread, and results are bit-identical for any thread count. The hot loop works on
-// batches of 8 nodes with no branches and no divisions (lbm/sweep_kernel.hpp). Walls with
+// batches of 8 nodes with no branches (but that per consecutive line) and no divisions (lbm/sweep_kernel.hpp). Walls with
 // interpolated bounce-back and the pressure nodes are fixed up after each sweep, link by
 // link and node by node, in a fixed order.
 //

@@ -23,6 +23,21 @@ constexpr std::size_t link_index(int q, long n) {
   return static_cast<std::size_t>((kQ - 1) * kBatch * (n / kBatch) + kBatch * (q - 1) + n % kBatch);
 }
 
+// Bit q (q = 1..18) set when link line q of the block starting at node `base` holds kBatch
+// consecutive slots (the neighbours along c_q are a run of nodes that fills one block line, as
+// inside long fluid runs when the shift lines up with the blocks: on a dense box the 8 directions
+// across the lane axis); the odd sweep moves such a line with one vector load and one store.
+inline std::uint32_t consecutive_lines(const std::uint32_t* links, long base) {
+  std::uint32_t bits = 0;
+  for (int q = 1; q < kQ; ++q) {
+    const std::uint32_t* line = links + link_index(q, base);
+    bool consecutive = true;
+    for (int k = 1; k < kBatch; ++k) consecutive = consecutive && line[k] == line[0] + static_cast<std::uint32_t>(k);
+    if (consecutive) bits |= std::uint32_t{1} << q;
+  }
+  return bits;
+}
+
 // The node of population slot s.
 constexpr long slot_node(std::size_t s) {
   const long block = static_cast<long>(s / (kQ * kBatch));

@@ -175,9 +175,12 @@ template <class Real, bool kOdd, bool kForce, class Relax>
 // One AA step over [r.begin, r.end) in double precision with AVX-512 (x86-64-v4): the
 // collision works on a block's 19 lines as 19 vectors (one node per lane), loaded and stored
 // in place by the even steps, gathered from and scattered to the neighbours' slots through
-// the link table by the odd steps. Same operations in the same order as sweep_batches, so the
-// same bits.
-template <bool kOdd, bool kForce, class Relax>
+// the link table by the odd steps (or, for the lines that r.consecutive marks, loaded and
+// stored as one vector: on bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's
+// odd steps from ~45 to ~51 MLUPS; its porous box, 6.5 % of lines, lost ~10 % to the branch,
+// so the solver passes r.consecutive only where such lines are common). Same operations in the
+// same order as sweep_batches, so the same bits.
+template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 [[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline void sweep_blocks_v4(const SweepRange<double>& r,
                                                                                   const Relax& relax) {
   static_assert(kBatch == 8, "one block line is one AVX-512 vector");
@@ -192,6 +195,7 @@ template <bool kOdd, bool kForce, class Relax>
   for (long base = r.begin; base < r.end; base += kBatch) {
     double* own = F + kQ * base;
     const std::uint32_t* link = L + (kQ - 1) * base;
+    const std::uint32_t consecutive = kConsecutive ? r.consecutive[base / kBatch] : 0;
     Lanes f[kQ];
     if constexpr (!kOdd) {
 #pragma GCC unroll 19
@@ -203,8 +207,9 @@ template <bool kOdd, bool kForce, class Relax>
       f[0] = _mm512_loadu_pd(own);
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
-        const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(link + kBatch * (opposite(q) - 1)));
-        f[q] = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, idx, F, 8);
+        const std::uint32_t* slots = link + kBatch * (opposite(q) - 1);
+        if (consecutive >> opposite(q) & 1) f[q] = _mm512_loadu_pd(F + slots[0]);
+        else f[q] = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), F, 8);
       }
     }
     collide_node<kForce>(f, gx, gy, gz, relax);
@@ -215,8 +220,9 @@ template <bool kOdd, bool kForce, class Relax>
       _mm512_storeu_pd(own, f[0]);
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
-        const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(link + kBatch * (q - 1)));
-        _mm512_i32scatter_pd(F, idx, f[q], 8);
+        const std::uint32_t* slots = link + kBatch * (q - 1);
+        if (consecutive >> q & 1) _mm512_storeu_pd(F + slots[0], f[q]);
+        else _mm512_i32scatter_pd(F, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), f[q], 8);
       }
     }
   }
@@ -224,12 +230,15 @@ template <bool kOdd, bool kForce, class Relax>
 
 template <class Relax>
 [[gnu::target("arch=x86-64-v4")]] void sweep_v4(const SweepRange<double>& r, const Relax& relax) {
-  if (r.odd) {
-    if (r.force) sweep_blocks_v4<true, true>(r, relax);
-    else sweep_blocks_v4<true, false>(r, relax);
+  if (r.odd && r.consecutive) {
+    if (r.force) sweep_blocks_v4<true, true, true>(r, relax);
+    else sweep_blocks_v4<true, false, true>(r, relax);
+  } else if (r.odd) {
+    if (r.force) sweep_blocks_v4<true, true, false>(r, relax);
+    else sweep_blocks_v4<true, false, false>(r, relax);
   } else {
-    if (r.force) sweep_blocks_v4<false, true>(r, relax);
-    else sweep_blocks_v4<false, false>(r, relax);
+    if (r.force) sweep_blocks_v4<false, true, false>(r, relax);
+    else sweep_blocks_v4<false, false, false>(r, relax);
   }
 }
 

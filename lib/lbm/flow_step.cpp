@@ -1,0 +1,34 @@
+// One fused stream+collide AA step (lbm/flow_solver.hpp): the collision operator's sweep over
+// the fixed node chunks on all threads, then the boundary passes.
+#include "lbm/flow_solver_state.hpp"
+
+#include "core/thread_governor.hpp"
+
+namespace cmp::lbm {
+
+template <class Real>
+void FlowSolver::Impl::step_once() {
+  BigVector<Real>& F = pops<Real>();
+  const bool odd = (steps & 1) != 0;
+  const double* g = settings.driving == Driving::kBodyForce ? force : nullptr;
+  for_each_chunk(chunks, [&](int c) {
+    SweepRange<Real> r{F.data(), links.data(), chunk_start(c), chunk_start(c + 1), odd, g,
+                       chunk_consecutive[static_cast<std::size_t>(c)] ? consecutive.data() : nullptr};
+    op->sweep(r);
+  });
+  apply_pressure_planes(F.data(), odd);
+  apply_walls(F.data(), odd);
+  ++steps;
+}
+
+void FlowSolver::step(long n) {
+  if (n <= 0) return;
+  ThreadGovernor governor;
+  for (long k = 0; k < n; ++k) {
+    if (impl_->settings.precision == Precision::kFloat) impl_->step_once<float>();
+    else impl_->step_once<double>();
+    governor.tick();
+  }
+}
+
+}  // namespace cmp::lbm
