@@ -3,6 +3,7 @@
 #include "lbm/flow_solver_state.hpp"
 
 #include "core/errors.hpp"
+#include "core/fnv1a.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -15,21 +16,7 @@ namespace {
 
 constexpr char kMagic[8] = {'C', 'M', 'P', 'L', 'B', 'M', '1', '\n'};
 
-// 64-bit FNV-1a.
-struct Fnv {
-  std::uint64_t h = 14695981039346656037ull;
-  void bytes(const void* p, std::size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) {
-      h ^= c[i];
-      h *= 1099511628211ull;
-    }
-  }
-  template <class T>
-  void value(const T& v) {
-    bytes(&v, sizeof v);
-  }
-};
+using Fnv = Fnv1a;
 
 void put(std::ostream& out, const void* p, std::size_t n) { out.write(static_cast<const char*>(p), static_cast<std::streamsize>(n)); }
 

@@ -6,6 +6,7 @@
 
 #include "cli/progress.hpp"
 #include "core/errors.hpp"
+#include "core/fnv1a.hpp"
 #include "io/atomic_output.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/csv.hpp"
@@ -41,19 +42,6 @@ double parse_one(const std::string& text) {
   if (!io::try_parse_double(text, v) || !std::isfinite(v)) throw UsageError("'" + text + "' is not a number");
   return v;
 }
-
-// FNV-1a over the bytes of what defines the shells: the spheres, the cell, the seed.
-struct Fingerprint {
-  std::uint64_t h = 1469598103934665603ULL;
-  void add(const void* p, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ULL;
-  }
-  template <class T>
-  void add(const T& v) {
-    add(&v, sizeof v);
-  }
-};
 
 std::string replace_phi(const std::string& pattern, const std::string& phi) {
   std::string out = pattern;
@@ -159,18 +147,18 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   shell::Compression run(shell::place_shells(spheres, cell, rest_diameter, reach, job.seed), o);
   const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
 
-  Fingerprint fp;
-  fp.add(spheres.centres.data(), sizeof(double) * static_cast<std::size_t>(spheres.centres.size()));
-  fp.add(spheres.radii.data(), sizeof(double) * static_cast<std::size_t>(spheres.radii.size()));
-  fp.add(spheres.box.data(), 3 * sizeof(double));
-  fp.add(cell.V.data(), sizeof(double) * static_cast<std::size_t>(cell.V.size()));
-  fp.add(cell.F.data(), sizeof(int) * static_cast<std::size_t>(cell.F.size()));
-  fp.add(job.seed);
-  fp.add(m.contact.vertex_radius);
-  if (m.shell_contact_style == "hertz-faces") fp.add(m.contact.contact_distance);
+  Fnv1a fp;  // what defines the shells: a checkpoint of other inputs is refused
+  fp.bytes(spheres.centres.data(), sizeof(double) * static_cast<std::size_t>(spheres.centres.size()));
+  fp.bytes(spheres.radii.data(), sizeof(double) * static_cast<std::size_t>(spheres.radii.size()));
+  fp.bytes(spheres.box.data(), 3 * sizeof(double));
+  fp.bytes(cell.V.data(), sizeof(double) * static_cast<std::size_t>(cell.V.size()));
+  fp.bytes(cell.F.data(), sizeof(int) * static_cast<std::size_t>(cell.F.size()));
+  fp.value(job.seed);
+  fp.value(m.contact.vertex_radius);
+  if (m.shell_contact_style == "hertz-faces") fp.value(m.contact.contact_distance);
   if (o.walls) {
-    fp.add(o.phi_start);
-    fp.add(m.contact.wall_modulus);
+    fp.value(o.phi_start);
+    fp.value(m.contact.wall_modulus);
   }
 
   std::string provenance = provenance_now;
