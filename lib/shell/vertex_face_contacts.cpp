@@ -111,6 +111,7 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   for (std::size_t k = 0; k < pairs_.size(); k += 2) partners[next[pairs_[k]]++] = pairs_[k + 1];
   candidate_start_.assign(static_cast<std::size_t>(n) + 1, 0);
   candidates_.clear();
+  candidate_images_.clear();
   std::vector<int> mine;
   for (Eigen::Index i = 0; i < n; ++i) {
     mine.clear();
@@ -121,6 +122,25 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
     std::sort(mine.begin(), mine.end());
     mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
     candidates_.insert(candidates_.end(), mine.begin(), mine.end());
+    // The periodic image of each candidate seen from x_i, fixed while the list holds (every
+    // candidate lies far inside half a box side): code (n_x + 1) + 3 (n_y + 1) + 9 (n_z + 1)
+    // for a shift of n box sides, or kStraddles when the corners sit in different images.
+    const double* p = X + 3 * i;
+    for (int f : mine) {
+      int code = -1;
+      for (int k = 0; k < 3 && code != kStraddles; ++k) {
+        const double* v = X + 3 * faces_[3 * f + k];
+        int c = 0;
+        for (int a = 2; a >= 0; --a) {
+          const double raw = v[a] - p[a];
+          const long shift = periods[a] > 0 ? std::lround((cmp::minimum_image(raw, periods[a], inverse[a]) - raw) / periods[a]) : 0;
+          c = 3 * c + static_cast<int>(shift + 1);
+          if (shift < -1 || shift > 1) c = -1000;
+        }
+        code = c < 0 || (code >= 0 && code != c) ? kStraddles : c;
+      }
+      candidate_images_.push_back(static_cast<std::uint8_t>(code));
+    }
     candidate_start_[i + 1] = static_cast<int>(candidates_.size());
   }
   active_faces_ = candidates_;
@@ -178,25 +198,31 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
       b[3] = std::sqrt(r2) * (1.0 + 1e-12) + delta_;  // the reach of the sphere: delta beyond it
     }
   });
+  // The shift of each image code (box sides times -1, 0, 1 per axis).
+  double shifts[27][3];
+  for (int code = 0; code < 27; ++code)
+    for (int a = 0, c = code; a < 3; ++a, c /= 3) shifts[code][a] = (c % 3 - 1) * periods[a];
   for_each_chunk(chunks, [&](int c) {
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       const double* p = X + 3 * i;
       for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
         const int f = candidates_[s];
+        const int code = candidate_images_[s];
+        // Positions relative to p in the candidate's image: the list's shift, or (a triangle
+        // cut by the box) each corner's own minimum image.
+        const auto relative = [&](const double* v, double out[3]) {
+          if (code != kStraddles)
+            for (int a = 0; a < 3; ++a) out[a] = v[a] - p[a] + shifts[code][a];
+          else
+            for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
+        };
         const double* sphere = bounds_.data() + 4 * f;
-        double gap2 = 0;
-        for (int a = 0; a < 3; ++a) {
-          const double d = cmp::minimum_image(sphere[a] - p[a], periods[a], inverse[a]);
-          gap2 += d * d;
-        }
-        if (!(gap2 < sphere[3] * sphere[3])) continue;
-        // The corners relative to p, each in its minimum image.
+        double centre[3];
+        relative(sphere, centre);
+        if (!(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2] < sphere[3] * sphere[3])) continue;
         Eigen::Vector3d corner[3];
-        for (int k = 0; k < 3; ++k) {
-          const double* v = X + 3 * faces_[3 * f + k];
-          for (int a = 0; a < 3; ++a) corner[k][a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
-        }
+        for (int k = 0; k < 3; ++k) relative(X + 3 * faces_[3 * f + k], corner[k].data());
         const Eigen::Vector3d w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
         const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
         const double d2 = q.squaredNorm();

@@ -44,6 +44,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -108,7 +109,9 @@ class VertexFaceContacts final : public ShellContactTerm {
   // built at and the largest move it tolerates.
   void build_candidates(std::span<const double> x) const;
   bool candidates_hold(std::span<const double> x) const;
+  static constexpr int kStraddles = 27;  // image code of a candidate whose corners lie in different images
   mutable std::vector<int> candidate_start_, candidates_;
+  mutable std::vector<std::uint8_t> candidate_images_;  // per candidate: its periodic image seen from the vertex
   mutable std::vector<int> active_faces_;  // every candidate triangle once, ascending
   mutable std::vector<double> reference_;
   mutable std::vector<double> bounds_;  // per face: centroid and bounding radius + delta
