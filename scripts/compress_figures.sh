@@ -9,11 +9,11 @@
 # Writes $out/compress/N<N>/{compress.csv,structure.csv,rdf.csv,dz_fit.csv,shape_fit.csv} and
 # $out/shell_compress.png. N = 32 and 50 at 642 vertices: about 15 minutes on 2 cores.
 # COMPRESS_CONTACT (hertz-vertices) is the contact law of these runs; COMPRESS_N="" skips them.
-# Then towards confluence: COMPRESS_HIGH_N (16) shells of the same cell with hertz-faces
+# Then towards confluence: COMPRESS_HIGH_N (32; 0 skips it) shells of the same cell with hertz-faces
 # (vertices against triangles: the vertex-sphere layer cannot go much past phi = 0.85) from
 # jamming to phi = COMPRESS_HIGH_PHI (0.95) in steps of 0.05, analysed:
 # $out/compress/faces<N>/{compress.csv,structure.csv} and the table
-# $out/compress/faces<N>/table.md (about 25 minutes at 16 x 642).
+# $out/compress/faces<N>/table.md (about 30 minutes at 32 x 642 on a quiet machine).
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
@@ -21,7 +21,7 @@ sizes=${COMPRESS_N-32 50}
 level=${COMPRESS_LEVEL:-4}
 seed=${COMPRESS_SEED:-1}
 contact=${COMPRESS_CONTACT:-hertz-vertices}
-high_n=${COMPRESS_HIGH_N:-16}
+high_n=${COMPRESS_HIGH_N:-32}
 high_phi=${COMPRESS_HIGH_PHI:-0.95}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin="$build/bin"
