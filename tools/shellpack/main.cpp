@@ -13,13 +13,13 @@
 #include "cli/tool.hpp"
 #include "elasticity/benchmark_curves.hpp"
 #include "io/atomic_output.hpp"
-#include "packrun/analyze_batch.hpp"
 #include "packrun/jam_batch.hpp"
 #include "packrun/shell_job.hpp"
 #include "packrun/structure_batch.hpp"
 #include "shell/mechanics_benchmarks.hpp"
 #include "shell/styles.hpp"
 
+#include "analyze_command.hpp"
 #include "compress_command.hpp"
 
 #include <fmt/format.h>
@@ -28,6 +28,7 @@
 #include <iostream>
 
 using namespace cmp;
+using shellpack::AnalyzeCommand;
 using shellpack::CompressCommand;
 using shellpack::with_checkpoint_args;
 
@@ -40,7 +41,6 @@ struct Options {
   bool keep_rattlers = false, allow_hyperstatic = false;
   packrun::StructureBatch structure;
   packrun::ShellJob shell;
-  packrun::AnalyzeBatch analyze;
   double vertex_radius = 0, wall_gap = 0;
   bool list_models = false;
   // bench-mechanics
@@ -95,29 +95,6 @@ void check_shell(cli::Tool& tool, Options& o) {
   tool.check(!(job.mesh_output == "-" && job.csv == "-"), "--csv",
              "the mesh already goes to stdout (-o -): write the CSV to a file");
 }
-
-void check_analyze(cli::Tool& tool, const packrun::AnalyzeBatch& b) {
-  tool.check(b.options.r_max > b.options.bin_width, "--rmax", "must exceed --bin");
-  const int to_stdout =
-      (b.output == "-") + (b.rdf_output == "-") + (b.shells_output == "-") + (b.contacts_output == "-");
-  tool.check(to_stdout <= 1, "", "-o, --rdf, --shells and --contacts: at most one of them may be '-' (stdout)");
-}
-
-// The analyze options that override the file's values only when given.
-struct AnalyzeOverrides {
-  double E = 1, nu = 0.5, rv = 1, delta = 1, d0 = 1, p0 = 1;
-  std::string contact;
-  CLI::Option *E_opt, *nu_opt, *rv_opt, *delta_opt, *contact_opt, *d0_opt, *p0_opt;
-  void apply(packrun::AnalyzeOptions& o) const {
-    if (E_opt->count()) o.youngs_modulus = E;
-    if (nu_opt->count()) o.poisson_ratio = nu;
-    if (rv_opt->count()) o.vertex_radius = rv;
-    if (delta_opt->count()) o.contact_distance = delta;
-    if (contact_opt->count()) o.contact = contact;
-    if (d0_opt->count()) o.d0 = d0;
-    if (p0_opt->count()) o.p0 = p0;
-  }
-};
 
 void run_bench_mechanics(const Options& o, const std::string& provenance) {
   io::AtomicOutput out(o.bench_output);
@@ -228,40 +205,8 @@ int main(int argc, char** argv) {
     sh->add_option("--csv", o.shell.csv, "the table of load steps ('-': stdout)")->default_str("-");
     tool.add_common(*sh, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
-    auto& an = o.analyze;
-    AnalyzeOverrides ov;
-    auto* analyze = app->add_subcommand("analyze", "the Chapter 4 observables of packings of shells (packing OFFs): Z, g(r), "
-                                                   "shapes, turgor, contact forces, mu_eff, walls, Voronoi facets");
-    analyze->add_option("packings", an.inputs, "packing OFFs ('-': stdin); one summary row each")->required();
-    analyze->add_option("-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
-    analyze->add_option("--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
-    analyze->add_option("--shells", an.shells_output, "write one row per shell to this CSV");
-    analyze->add_option("--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
-    ov.E_opt = tool.add_double(*analyze, "-E,--youngs-modulus", ov.E, "Young's modulus E [P] (default: the file's E=)",
-                               cli::positive())->default_str("");
-    ov.nu_opt = tool.add_double(*analyze, "--nu,--poisson-ratio", ov.nu, "Poisson's ratio nu (default: the file's nu=, else 0.5)",
-                                cli::left_open(-1, 0.5));
-    ov.rv_opt = tool.add_double(*analyze, "--vertex-radius", ov.rv,
-                                "Hertz vertex radius R_v [u] (default: the file's vertex_radius=, else thickness=)",
-                                cli::positive())
-                    ->default_str("");
-    ov.contact_opt = analyze->add_option("--contact", ov.contact,
-                                         "contact law between shells: hertz-vertices or hertz-faces (default: the file's "
-                                         "contact=, else hertz-vertices)");
-    ov.delta_opt = tool.add_double(*analyze, "--contact-distance", ov.delta,
-                                   "hertz-faces: contact distance delta [u] (default: the file's contact_distance=, else "
-                                   "thickness=)",
-                                   cli::positive())
-                       ->default_str("");
-    ov.d0_opt = tool.add_double(*analyze, "--d0", ov.d0, "D0, the unit of g(r) [u] (default: the file's D0=, else from the volumes)",
-                                cli::positive())->default_str("");
-    ov.p0_opt = tool.add_double(*analyze, "--p0", ov.p0, "initial turgor P0 [P] (default: the file's P0=)", cli::positive())
-                    ->default_str("");
-    tool.add_double(*analyze, "--wall-modulus", an.options.wall_modulus, "Young's modulus of the walls [P] (default: rigid)",
-                    cli::positive());
-    tool.add_double(*analyze, "--bin", an.options.bin_width, "g(r) bin width [D0]", cli::positive());
-    tool.add_double(*analyze, "--rmax", an.options.r_max, "g(r) range [D0]", cli::positive());
-    tool.add_common(*analyze, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
+    AnalyzeCommand analyze_command;
+    auto* analyze = analyze_command.add(tool, *app, o.common);
 
     auto* bench = app->add_subcommand("bench-mechanics", "an Appendix B benchmark as CSV, computed beside the analytic curve");
     bench->add_option("case", o.bench_case, "sphere, poisson, plate-point, plate-uniform, plate-large, plates-contact or buckling")
@@ -282,11 +227,7 @@ int main(int argc, char** argv) {
     if (jam->parsed()) check_jam(tool, o);
     if (structure->parsed()) check_structure(tool, o.structure);
     if (sh->parsed()) check_shell(tool, o);
-    if (analyze->parsed()) {
-      check_analyze(tool, an);
-      tool.check(!ov.contact_opt->count() || ov.contact == "hertz-vertices" || ov.contact == "hertz-faces", "--contact",
-                 "must be hertz-vertices or hertz-faces, got '" + ov.contact + "'");
-    }
+    if (analyze->parsed()) analyze_command.check(tool);
     if (bench->parsed()) tool.collect("case", [&] { shell::check_mechanics_benchmark(o.bench_case); });
     tool.finish_checks();
     cli::apply_threads(o.common);
@@ -294,13 +235,12 @@ int main(int argc, char** argv) {
       shell::write_model_list(std::cout);
       return 0;
     }
-    o.jam.quiet = o.structure.quiet = o.shell.quiet = an.quiet = o.common.quiet;
-    ov.apply(an.options);
+    o.jam.quiet = o.structure.quiet = o.shell.quiet = o.common.quiet;
     const std::string provenance = cli::provenance("shellpack", argc, argv);
     if (jam->parsed()) packrun::run_jam_batch(o.jam, provenance);
     if (structure->parsed()) packrun::run_structure_batch(o.structure, provenance);
     if (sh->parsed()) packrun::run_shell_job(o.shell, provenance);
-    if (analyze->parsed()) packrun::run_analyze_batch(an, provenance);
+    if (analyze->parsed()) analyze_command.run(o.common.quiet, provenance);
     if (bench->parsed()) run_bench_mechanics(o, provenance);
     if (cp->parsed()) compress.run();
     return 0;

@@ -1,0 +1,28 @@
+#pragma once
+// `shellpack analyze`: its options (the material and contact values that override a packing
+// file's own only when given), their checks and the run.
+#include "cli/tool.hpp"
+#include "packrun/analyze_batch.hpp"
+
+#include <string>
+
+namespace cmp::shellpack {
+
+class AnalyzeCommand {
+ public:
+  // Adds the subcommand and its options to `parent`; `common` takes --threads, -q.
+  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);
+  // Checks the options (problems collected in `tool`).
+  void check(cli::Tool& tool);
+  // Applies the overrides given and runs the batch.
+  void run(bool quiet, const std::string& provenance);
+
+ private:
+  packrun::AnalyzeBatch batch_;
+  double E_ = 1, nu_ = 0.5, rv_ = 1, delta_ = 1, d0_ = 1, p0_ = 1;
+  std::string contact_;
+  CLI::Option *E_opt_ = nullptr, *nu_opt_ = nullptr, *rv_opt_ = nullptr, *delta_opt_ = nullptr,
+              *contact_opt_ = nullptr, *d0_opt_ = nullptr, *p0_opt_ = nullptr;
+};
+
+}  // namespace cmp::shellpack
