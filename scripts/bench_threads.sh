@@ -11,6 +11,8 @@ bin="$build/bin"
 "$bench/bench_fit" data >"$work/kc.csv"
 "$bin/shellpack" jam -N 50 --seed 1 -q -o "$work/jam.xyz" --csv /dev/null
 "$bin/percolate" "$work/jam.xyz" --delta 0.04 -q -o "$work/cluster.vtk" --csv /dev/null
+"$bin/shellpack" jam -N 16 --seed 1 -q -o "$work/jam16.xyz" --csv /dev/null
+"$bin/rndmesh" icosa --level 4 --radius 0.5 -q -o "$work/ico4.off"
 
 # name|what it runs|command ({T}: the thread count)
 cases=(
@@ -22,6 +24,8 @@ cases=(
   "lbflow_cluster|lbflow on the cluster of a jammed packing of 50 spheres, delta 0.04, M = 1, 600 steps|$bin/lbflow $work/cluster.vtk --refine 1 --max-steps 600 --threads {T} -q -o /dev/null || true"
   "jam2d_sweep|jam2d sweep --box 8 --seeds 1:4 (jamming, 4 colonies)|$bin/jam2d sweep --box 8 --seeds 1:4 --threads {T} -q > /dev/null"
   "shell_inflate_2562|shellpack shell: inflate a 2562-vertex shell (SVK + hinge-uniform + turgor) to equilibrium|OMP_NUM_THREADS={T} $bench/bench_shell inflate 5"
+  "compress_faces_16x642|shellpack compress: 16 shells x 642 vertices, hertz-faces, the first 12 box steps|$bin/shellpack compress $work/jam16.xyz --mesh $work/ico4.off --contact hertz-faces --phi 0.9 --stop-after-steps 12 --threads {T} -q -o /dev/null --csv /dev/null"
+  "compress_vertices_16x642|shellpack compress: 16 shells x 642 vertices, hertz-vertices, the first 12 box steps|$bin/shellpack compress $work/jam16.xyz --mesh $work/ico4.off --phi 0.9 --stop-after-steps 12 --threads {T} -q -o /dev/null --csv /dev/null"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )
 

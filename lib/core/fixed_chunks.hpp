@@ -26,4 +26,15 @@ void for_each_chunk(int chunks, Body&& body) {
   for (int c = 0; c < chunks; ++c) body(c);
 }
 
+// The same chunks, on all threads only when `parallel` (a pass too short to pay for a
+// fork/join runs them in order on this one; the bits are the same either way).
+template <class Body>
+void for_each_chunk(int chunks, bool parallel, Body&& body) {
+  if (!parallel) {
+    for (int c = 0; c < chunks; ++c) body(c);
+    return;
+  }
+  for_each_chunk(chunks, body);
+}
+
 }  // namespace cmp

@@ -3,6 +3,11 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <mutex>
+#include <cstdio>
+#include <cstdlib>
+static double g_t[3]; static long g_n[3]; static long g_sw;
+struct GovDump{~GovDump(){ if(std::getenv("GOVTRACE")) std::fprintf(stderr,"gov: 1T %.3fs %ld it, 2T %.3fs %ld it, switches %ld\n",g_t[1],g_n[1],g_t[2],g_n[2],g_sw);} } g_dump;
 
 namespace cmp {
 
@@ -12,7 +17,26 @@ constexpr double kFirstExploitSeconds = 0.05;
 constexpr double kLongestExploitSeconds = 1.0;
 // The other choice must be this much faster to take over: noise does not make it flip.
 constexpr double kMargin = 1.05;
+// A first epoch shorter than this measures too few iterations to compare.
+constexpr double kShortestFirstSeconds = 0.01;
+
+// What the last governor learned, for the next one: a run makes thousands of short
+// relaxations, and each starting afresh on all threads (50 ms before its first probe) spent
+// most of a loaded run on the slow choice. The next governor takes over the choice and the
+// time its next probe is due.
+struct Memory {
+  int most = 0, chosen = 0;
+  double exploit_seconds = 0;
+  std::chrono::steady_clock::time_point probe_due;
+};
+std::mutex memory_mutex;
+Memory memory;
 }  // namespace
+
+void ThreadGovernor::forget() {
+  std::lock_guard lock(memory_mutex);
+  memory = Memory{};
+}
 
 ThreadGovernor::ThreadGovernor(int threads) {
   saved_ = omp_get_max_threads();
@@ -20,11 +44,31 @@ ThreadGovernor::ThreadGovernor(int threads) {
   active_ = most_ > 1 && !omp_in_parallel();
   chosen_ = current_ = active_ ? most_ : 1;
   exploit_seconds_ = kFirstExploitSeconds;
-  if (active_) start_epoch(most_, kFirstExploitSeconds);
+  if (!active_) return;
+  double first = kFirstExploitSeconds;
+  {
+    std::lock_guard lock(memory_mutex);
+    if (memory.most == most_) {
+      chosen_ = memory.chosen;
+      exploit_seconds_ = memory.exploit_seconds;
+      first = std::max(std::chrono::duration<double>(memory.probe_due - Clock::now()).count(),
+                       kShortestFirstSeconds);
+    }
+  }
+  current_ = saved_;  // start_epoch sets the thread count when it differs from this
+  start_epoch(chosen_, first);
 }
 
 ThreadGovernor::~ThreadGovernor() {
-  if (active_) omp_set_num_threads(saved_);
+  if (!active_) return;
+  omp_set_num_threads(saved_);
+  std::lock_guard lock(memory_mutex);
+  memory.most = most_;
+  memory.chosen = chosen_;
+  memory.exploit_seconds = exploit_seconds_;
+  // Mid-probe, the next governor probes soon; otherwise when this long epoch would have ended.
+  memory.probe_due = probing_ ? Clock::now() : epoch_start_ + std::chrono::duration_cast<Clock::duration>(
+                                                                   std::chrono::duration<double>(epoch_seconds_));
 }
 
 void ThreadGovernor::start_epoch(int threads, double seconds) {
@@ -41,6 +85,7 @@ void ThreadGovernor::tick() {
   const double elapsed = std::chrono::duration<double>(Clock::now() - epoch_start_).count();
   if (elapsed < epoch_seconds_) return;
   const double rate = static_cast<double>(epoch_ticks_) / elapsed;
+  g_t[current_] += elapsed; g_n[current_] += epoch_ticks_;
   const int other = chosen_ == most_ ? 1 : most_;
   if (!probing_) {
     // A long epoch ended: remember its speed, then try the other choice briefly.
@@ -52,7 +97,7 @@ void ThreadGovernor::tick() {
   probing_ = false;
   if (rate > kMargin * rate_current_) {
     chosen_ = current_;
-    ++switches_;
+    ++switches_; ++g_sw;
     exploit_seconds_ = kFirstExploitSeconds;
   } else {
     exploit_seconds_ = std::min(2 * exploit_seconds_, kLongestExploitSeconds);

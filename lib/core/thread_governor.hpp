@@ -8,7 +8,8 @@
 //
 // It alternates short probe epochs (about 5 ms) of the other choice with long epochs of the
 // faster one (growing from 50 ms to about 1 s while the choice holds), so a wrong guess costs
-// a few per cent at most.
+// a few per cent at most. The choice carries over from one governor to the next in the
+// process (a run makes many short relaxations), as does the time the next probe is due.
 #include <chrono>
 
 namespace cmp {
@@ -29,6 +30,8 @@ class ThreadGovernor {
   int threads() const { return current_; }
   // How many times the choice changed (for tests and benchmarks).
   long switches() const { return switches_; }
+  // Drops what earlier governors learned: the next starts on all threads (for tests).
+  static void forget();
 
  private:
   using Clock = std::chrono::steady_clock;

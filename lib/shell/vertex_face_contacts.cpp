@@ -1,5 +1,6 @@
 #include "shell/vertex_face_contacts.hpp"
 
+#include "shell/element_assembly.hpp"
 #include "shell/shell_partition.hpp"
 
 #include "core/errors.hpp"
@@ -178,7 +179,10 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   bounds_.resize(faces_.size() / 3 * 4);
   const long na = static_cast<long>(active_faces_.size());
   const int face_chunks = static_cast<int>(std::max<long>(1, (na + kChunkVertices - 1) / kChunkVertices));
-  for_each_chunk(face_chunks, [&](int c) {
+  // On all threads only where the membrane's passes are (about two triangles a vertex): below
+  // that the search is too short for a fork/join, which under load costs more than it saves.
+  const bool parallel = 2 * n >= ElementAssembly::parallel_elements();
+  for_each_chunk(face_chunks, parallel, [&](int c) {
     for (long k = chunk_begin(na, face_chunks, c), end = chunk_begin(na, face_chunks, c + 1); k < end; ++k) {
       const long f = active_faces_[k];
       const double* a = X + 3 * faces_[3 * f];
@@ -202,7 +206,7 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   double shifts[27][3];
   for (int code = 0; code < 27; ++code)
     for (int a = 0, c = code; a < 3; ++a, c /= 3) shifts[code][a] = (c % 3 - 1) * periods[a];
-  for_each_chunk(chunks, [&](int c) {
+  for_each_chunk(chunks, parallel, [&](int c) {
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       const double* p = X + 3 * i;

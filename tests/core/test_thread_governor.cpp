@@ -25,6 +25,7 @@ int settle(cmp::ThreadGovernor& g, int slow_threads, double seconds) {
 
 TEST_CASE("thread governor: moves to one thread when two run slower and back when they run faster") {
   omp_set_num_threads(2);
+  cmp::ThreadGovernor::forget();
   {
     cmp::ThreadGovernor g(2);
     CHECK(g.threads() == 2);
@@ -52,4 +53,29 @@ TEST_CASE("thread governor: inert for one thread and inside a parallel region") 
     }
   }
   CHECK(inside == 1);
+}
+
+TEST_CASE("thread governor: a new governor starts with the choice the last one made") {
+  // A loaded run makes many short relaxations: each must not start over on the slow choice.
+  omp_set_num_threads(2);
+  cmp::ThreadGovernor::forget();
+  {
+    cmp::ThreadGovernor g(2);
+    CHECK(settle(g, 2, 0.4) == 1);
+  }
+  CHECK(omp_get_max_threads() == 2);  // restored between governors
+  for (int k = 0; k < 20; ++k) {
+    cmp::ThreadGovernor next(2);
+    CHECK(next.threads() == 1);
+    CHECK(omp_get_max_threads() == 1);
+    settle(next, 2, 0.01);  // shorter than an epoch: no probe of two threads
+  }
+  {
+    // The load went away: a long enough relaxation still finds two threads again.
+    cmp::ThreadGovernor later(2);
+    CHECK(settle(later, 1, 2.5) == 2);
+  }
+  cmp::ThreadGovernor::forget();
+  cmp::ThreadGovernor fresh(2);
+  CHECK(fresh.threads() == 2);
 }

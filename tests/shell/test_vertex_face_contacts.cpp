@@ -5,6 +5,7 @@
 // (test_styles_gradient.cpp).
 #include "shell/hertz_contacts.hpp"
 #include "shell/vertex_face_contacts.hpp"
+#include "shell/element_assembly.hpp"
 
 #include "core/errors.hpp"
 #include "spheremesh/subdivision.hpp"
@@ -227,6 +228,9 @@ TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
   const VertexFaceContacts term(m, c);
   const auto x0 = fx::state(m.V);
   const int saved = omp_get_max_threads();
+  // The search runs on all threads only for large systems; this one is made to count as large.
+  const long saved_threshold = cmp::shell::ElementAssembly::parallel_elements();
+  cmp::shell::ElementAssembly::set_parallel_elements(2048);
   for (double scale : {1.0, 1.01, 1.02}) {
     std::vector<double> x = x0;
     for (double& v : x) v *= scale;
@@ -244,5 +248,6 @@ TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
     REQUIRE(k1.size() == k2.size());
     for (std::size_t i = 0; i < k1.size(); ++i) CHECK((k1[i].i == k2[i].i && k1[i].corners == k2[i].corners && k1[i].r == k2[i].r));
   }
+  cmp::shell::ElementAssembly::set_parallel_elements(saved_threshold);
   omp_set_num_threads(saved);
 }
