@@ -12,7 +12,7 @@
 # Then towards confluence: COMPRESS_HIGH_N (32; 0 skips it) shells of the same cell with hertz-faces
 # (vertices against triangles: the vertex-sphere layer cannot go much past phi = 0.85) from
 # jamming to phi = COMPRESS_HIGH_PHI (0.95) in steps of 0.05, analysed:
-# $out/compress/faces<N>/{compress.csv,structure.csv} and the table
+# $out/compress/faces<N>/{compress.csv,structure.csv,dz_fit.csv,shape_fit.csv} and the table
 # $out/compress/faces<N>/table.md (about 30 minutes at 32 x 642 on a quiet machine).
 set -euo pipefail
 build=${1:-build}
@@ -77,6 +77,11 @@ if [ "$high_n" -gt 0 ]; then
   "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact hertz-faces \
     --phi "0.6:$high_phi:0.05" -o "$dir/pack_{phi}.off" --timings -q >"$dir/compress.csv"
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
+  # The same laws as above from this run's steps: dZ near jamming and the shapes.
+  "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y dZ --where 'dZ>0' --where 'dphi<=0.15' \
+    -q -o "$dir/dz_fit.csv"
+  "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y delta_eps_mean --where 'dphi>0' --where 'dphi<=0.15' \
+    -q -o "$dir/shape_fit.csv"
   awk -F, '/^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          print "| phi | Z | <Pi>/Pi0 | cv(Pi) | delta_eps | Voronoi facets | force cv |"; print "|---|---|---|---|---|---|---|"; next }

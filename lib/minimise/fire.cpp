@@ -24,6 +24,7 @@ void FireParameters::validate() const {
   require(f_dec > 0 && f_dec < 1, "f_dec must lie in (0, 1)");
   require(mass > 0, "mass must be positive");
   require(force_tolerance >= 0, "force tolerance must not be negative");
+  require(parallel_size >= 0, "parallel_size must not be negative");
   require(max_iterations > 0, "max_iterations must be positive");
   require(block_size > 0, "block_size must be positive");
 }
@@ -66,6 +67,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   // Large states are cut into a fixed number of chunks of whole blocks, passed over by all
   // threads; small ones are one chunk (an iteration too short for a fork/join).
   const int chunks = n >= kParallelFireSize ? kFireChunks : 1;
+  const bool parallel = chunks > 1 && n >= p.parallel_size;
   std::vector<Eigen::Index> bounds(chunks + 1);
   for (int c = 0; c <= chunks; ++c) bounds[c] = chunk_begin(n, chunks, c, p.block_size);
   std::vector<std::array<double, 4>> sums(chunks);
@@ -118,10 +120,10 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       }
       sums[c] = {power, vv, ff, worst};
     };
-    for_each_chunk(chunks, drift);
+    for_each_chunk(chunks, parallel, drift);
     forces(x, f);
     ++result.force_evaluations;
-    for_each_chunk(chunks, kick_and_measure);
+    for_each_chunk(chunks, parallel, kick_and_measure);
     double power = 0, vv = 0, ff = 0, worst = 0;
     for (int c = 0; c < chunks; ++c) {
       power += sums[c][0], vv += sums[c][1], ff += sums[c][2];

@@ -32,6 +32,10 @@ struct FireParameters {
   double force_tolerance = 1e-12;  // stop when max_i |f_i| <= this (thesis: 1e-15, absolute)
   long max_iterations = 10'000'000;
   int block_size = 3;          // coordinates per particle for |f_i|
+  // From this many coordinates on, the vector passes run on all threads (below, the same
+  // chunks in order on one: same bits). kParallelFireSize suits forces as cheap as spheres';
+  // a caller whose own force passes stay on one thread up to a larger size passes that size.
+  long parallel_size = 3 * 2048;
 
   // Throws cmp::UsageError naming the first bad field (non-positive steps, f_dec >= 1, ...).
   void validate() const;
@@ -67,8 +71,9 @@ using FireAdjust = std::function<bool(long iterations, double max_force)>;
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& parameters,
                 const FireProgress& progress = {}, long progress_every = 1000, const FireAdjust& adjust = {});
 
-// From this many coordinates on, FIRE's vector passes run on all threads, over kFireChunks
-// fixed chunks whose sums are added in order: the same path for any thread count.
+// From this many coordinates on, FIRE's vector passes are cut into kFireChunks fixed chunks
+// whose sums are added in order (on all threads from FireParameters::parallel_size): the same
+// path for any thread count.
 inline constexpr Eigen::Index kParallelFireSize = 3 * 2048;
 inline constexpr int kFireChunks = 4;
 

@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
+#include "shell/element_assembly.hpp"
 
 #include <cmath>
 
@@ -74,6 +75,9 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
   minimise::FireParameters fp = p.fire;
   fp.force_tolerance = p.relative_tolerance * p.force_scale;
   fp.mass = mass;
+  // FIRE's vector passes on all threads only where the force passes are (a vertex has about
+  // two triangles): below that they are a few microseconds, less than a fork/join.
+  fp.parallel_size = std::max<long>(fp.parallel_size, 3 * ElementAssembly::parallel_elements() / 2);
   const long before = r.iterations;
   TurgorPressure* pressure = s.pressure();
   minimise::FireAdjust adjust;
