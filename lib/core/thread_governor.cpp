@@ -4,10 +4,6 @@
 
 #include <algorithm>
 #include <mutex>
-#include <cstdio>
-#include <cstdlib>
-static double g_t[3]; static long g_n[3]; static long g_sw;
-struct GovDump{~GovDump(){ if(std::getenv("GOVTRACE")) std::fprintf(stderr,"gov: 1T %.3fs %ld it, 2T %.3fs %ld it, switches %ld\n",g_t[1],g_n[1],g_t[2],g_n[2],g_sw);} } g_dump;
 
 namespace cmp {
 
@@ -85,7 +81,6 @@ void ThreadGovernor::tick() {
   const double elapsed = std::chrono::duration<double>(Clock::now() - epoch_start_).count();
   if (elapsed < epoch_seconds_) return;
   const double rate = static_cast<double>(epoch_ticks_) / elapsed;
-  g_t[current_] += elapsed; g_n[current_] += epoch_ticks_;
   const int other = chosen_ == most_ ? 1 : most_;
   if (!probing_) {
     // A long epoch ended: remember its speed, then try the other choice briefly.
@@ -97,7 +92,7 @@ void ThreadGovernor::tick() {
   probing_ = false;
   if (rate > kMargin * rate_current_) {
     chosen_ = current_;
-    ++switches_; ++g_sw;
+    ++switches_;
     exploit_seconds_ = kFirstExploitSeconds;
   } else {
     exploit_seconds_ = std::min(2 * exploit_seconds_, kLongestExploitSeconds);
