@@ -51,22 +51,54 @@ void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool
 }
 
 namespace {
-// The periods of the minimum image (0 along an open axis) and their inverses.
-void periods_of(const std::optional<ShellContactTerm::BoxSides>& box, double periods[3], double inverse[3]) {
-  for (int a = 0; a < 3; ++a) {
-    const bool wraps = box && box->periodic[a];
-    periods[a] = wraps ? box->lengths[a] : 0.0;
-    inverse[a] = wraps ? 1.0 / box->lengths[a] : 0.0;
+// The periodic images of the box: the periods of the minimum image (0 along an open axis),
+// their inverses, and the shift of each image code (box sides times -1, 0, 1 per axis).
+struct Images {
+  double periods[3], inverse[3], shifts[27][3];
+  explicit Images(const std::optional<ShellContactTerm::BoxSides>& box) {
+    for (int a = 0; a < 3; ++a) {
+      const bool wraps = box && box->periodic[a];
+      periods[a] = wraps ? box->lengths[a] : 0.0;
+      inverse[a] = wraps ? 1.0 / box->lengths[a] : 0.0;
+    }
+    for (int code = 0; code < 27; ++code)
+      for (int a = 0, c = code; a < 3; ++a, c /= 3) shifts[code][a] = (c % 3 - 1) * periods[a];
   }
+  // v - p in a candidate's image: the list's shift, or (code `straddles`, a triangle cut by
+  // the box) each corner's own minimum image.
+  void relative(const double* v, const double* p, int code, int straddles, double out[3]) const {
+    if (code != straddles)
+      for (int a = 0; a < 3; ++a) out[a] = v[a] - p[a] + shifts[code][a];
+    else
+      for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
+  }
+};
+
+// The point q of the triangle `corners` closest to p, relative to p (q - p), and its weights.
+// The same operations in the list's build and in every evaluation: a contact the list keeps is
+// found with the same bits.
+inline Eigen::Vector3d closest_offset(const Images& images, const double* X, const int* corners, const double* p,
+                                      int code, int straddles, Eigen::Vector3d& w) {
+  Eigen::Vector3d corner[3];
+  for (int k = 0; k < 3; ++k) images.relative(X + 3 * corners[k], p, code, straddles, corner[k].data());
+  w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
+  return w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
 }
 }  // namespace
+
+bool VertexFaceContacts::parallel() const {
+  // On all threads only where the membrane's passes are (about two triangles a vertex): below
+  // that a pass is too short for a fork/join, which under load costs more than it saves.
+  return 2 * static_cast<long>(shell_of_.size()) >= ElementAssembly::parallel_elements();
+}
 
 void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
-  double periods[3], inverse[3];
-  periods_of(box_, periods, inverse);
+  const Images images(box_);
+  const double* periods = images.periods;
+  const double* inverse = images.inverse;
   const double* X = scratch_.data();
   // reach_ per vertex: delta + the longest edge of its triangles (minimum image: a shell may
   // straddle a periodic face) / sqrt(3).
@@ -87,16 +119,16 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
   for (double& r : reach_) r = delta_ + std::sqrt(r * third);
   const double longest = std::sqrt(longest2), base = delta_ + std::sqrt(longest2 * third);
-  const double skin = 0.25 * base, cutoff = base + skin;
+  const double skin = kSkin * base, cutoff = base + skin;
   if (box_)
     for (int a = 0; a < 3; ++a)
       if (box_->periodic[a] && !(box_->lengths[a] >= 2.0 * (cutoff + longest)))
         throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
-                               " is under 2 (1.5 (delta + 0.58 longest edge) + longest edge) = " +
+                               " is under 2 (delta + 0.58 longest edge + skin + longest edge) = " +
                                std::to_string(2.0 * (cutoff + longest)));
-  // Vertex pairs of different shells within the cutoff (one pass over the cells, on one
-  // thread), kept in the direction(s) i -> j where x_i is within j's reach + skin; then each
-  // vertex's candidates: the triangles around its partners, ascending, each once.
+  // Broad phase: vertex pairs of different shells within the cutoff (one pass over the cells,
+  // on one thread), kept in the direction(s) i -> j where x_i is within j's reach + skin: a
+  // triangle within delta + skin of x_i has such a corner j.
   const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
   pairs_.clear();
   grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double r2) {
@@ -110,45 +142,67 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   for (Eigen::Index v = 0; v < n; ++v) partner_start[v + 1] += partner_start[v];
   std::vector<int> next(partner_start.begin(), partner_start.end() - 1);
   for (std::size_t k = 0; k < pairs_.size(); k += 2) partners[next[pairs_[k]]++] = pairs_[k + 1];
+  // Narrow phase, per fixed chunk of vertices on all threads: the triangles around each
+  // vertex's partners, ascending, each once, with their periodic image seen from x_i (fixed
+  // while the list holds: every candidate lies far inside half a box side; code (n_x + 1) +
+  // 3 (n_y + 1) + 9 (n_z + 1) for a shift of n box sides, or kStraddles when the corners sit in
+  // different images); kept only when the triangle is within delta + skin of x_i. Chunks are
+  // joined in order: the same list on any thread count.
+  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  std::vector<std::vector<int>> kept(static_cast<std::size_t>(chunks));
+  std::vector<std::vector<std::uint8_t>> kept_images(static_cast<std::size_t>(chunks));
   candidate_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  const double keep2 = (delta_ + skin) * (delta_ + skin);
+  for_each_chunk(chunks, parallel(), [&](int c) {
+    std::vector<int> mine;
+    std::vector<int>& faces = kept[static_cast<std::size_t>(c)];
+    std::vector<std::uint8_t>& codes = kept_images[static_cast<std::size_t>(c)];
+    for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
+      mine.clear();
+      for (int t = partner_start[i]; t < partner_start[i + 1]; ++t) {
+        const int j = partners[t];
+        mine.insert(mine.end(), incident_.begin() + incident_start_[j], incident_.begin() + incident_start_[j + 1]);
+      }
+      std::sort(mine.begin(), mine.end());
+      mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+      const double* p = X + 3 * i;
+      int count = 0;
+      for (int f : mine) {
+        int code = -1;
+        for (int k = 0; k < 3 && code != kStraddles; ++k) {
+          const double* v = X + 3 * faces_[3 * f + k];
+          int cc = 0;
+          for (int a = 2; a >= 0; --a) {
+            const double raw = v[a] - p[a];
+            const long shift =
+                periods[a] > 0 ? std::lround((cmp::minimum_image(raw, periods[a], inverse[a]) - raw) / periods[a]) : 0;
+            cc = 3 * cc + static_cast<int>(shift + 1);
+            if (shift < -1 || shift > 1) cc = -1000;
+          }
+          code = cc < 0 || (code >= 0 && code != cc) ? kStraddles : cc;
+        }
+        Eigen::Vector3d w;
+        const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, code, kStraddles, w);
+        if (!(q.squaredNorm() < keep2)) continue;
+        faces.push_back(f);
+        codes.push_back(static_cast<std::uint8_t>(code));
+        ++count;
+      }
+      candidate_start_[i + 1] = count;
+    }
+  });
+  for (Eigen::Index v = 0; v < n; ++v) candidate_start_[v + 1] += candidate_start_[v];
   candidates_.clear();
   candidate_images_.clear();
-  std::vector<int> mine;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    mine.clear();
-    for (int t = partner_start[i]; t < partner_start[i + 1]; ++t) {
-      const int j = partners[t];
-      mine.insert(mine.end(), incident_.begin() + incident_start_[j], incident_.begin() + incident_start_[j + 1]);
-    }
-    std::sort(mine.begin(), mine.end());
-    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-    candidates_.insert(candidates_.end(), mine.begin(), mine.end());
-    // The periodic image of each candidate seen from x_i, fixed while the list holds (every
-    // candidate lies far inside half a box side): code (n_x + 1) + 3 (n_y + 1) + 9 (n_z + 1)
-    // for a shift of n box sides, or kStraddles when the corners sit in different images.
-    const double* p = X + 3 * i;
-    for (int f : mine) {
-      int code = -1;
-      for (int k = 0; k < 3 && code != kStraddles; ++k) {
-        const double* v = X + 3 * faces_[3 * f + k];
-        int c = 0;
-        for (int a = 2; a >= 0; --a) {
-          const double raw = v[a] - p[a];
-          const long shift = periods[a] > 0 ? std::lround((cmp::minimum_image(raw, periods[a], inverse[a]) - raw) / periods[a]) : 0;
-          c = 3 * c + static_cast<int>(shift + 1);
-          if (shift < -1 || shift > 1) c = -1000;
-        }
-        code = c < 0 || (code >= 0 && code != c) ? kStraddles : c;
-      }
-      candidate_images_.push_back(static_cast<std::uint8_t>(code));
-    }
-    candidate_start_[i + 1] = static_cast<int>(candidates_.size());
+  for (int c = 0; c < chunks; ++c) {
+    candidates_.insert(candidates_.end(), kept[c].begin(), kept[c].end());
+    candidate_images_.insert(candidate_images_.end(), kept_images[c].begin(), kept_images[c].end());
   }
-  active_faces_ = candidates_;
-  std::sort(active_faces_.begin(), active_faces_.end());
-  active_faces_.erase(std::unique(active_faces_.begin(), active_faces_.end()), active_faces_.end());
   reference_.assign(x.begin(), x.end());
-  tolerated_move_ = skin / 3.2;  // > 2 (1 + 1/sqrt 3) times the largest move
+  // A triangle at least delta + skin from x_i stays beyond delta while x_i and its corners each
+  // move less than skin / 2 (the point of the moved triangle with the old closest weights
+  // moves no more than its corners); a little less, for round-off.
+  tolerated_move_ = 0.5 * skin * (1.0 - 1e-9);
   list_valid_ = true;
 }
 
@@ -169,66 +223,17 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   for (auto& r : records_) r.clear();
   if (n == 0 || faces_.empty()) return;
   if (!candidates_hold(x)) build_candidates(x);
-
-  double periods[3], inverse[3];
-  periods_of(box_, periods, inverse);
+  const Images images(box_);
   const double* X = x.data();
   const double delta2 = delta_ * delta_;
-  // Each candidate triangle's bounding sphere (centroid, largest corner distance): most
-  // candidates are farther than delta from it and skip the closest-point test.
-  bounds_.resize(faces_.size() / 3 * 4);
-  const long na = static_cast<long>(active_faces_.size());
-  const int face_chunks = static_cast<int>(std::max<long>(1, (na + kChunkVertices - 1) / kChunkVertices));
-  // On all threads only where the membrane's passes are (about two triangles a vertex): below
-  // that the search is too short for a fork/join, which under load costs more than it saves.
-  const bool parallel = 2 * n >= ElementAssembly::parallel_elements();
-  for_each_chunk(face_chunks, parallel, [&](int c) {
-    for (long k = chunk_begin(na, face_chunks, c), end = chunk_begin(na, face_chunks, c + 1); k < end; ++k) {
-      const long f = active_faces_[k];
-      const double* a = X + 3 * faces_[3 * f];
-      double e[2][3], g[3];
-      for (int k = 0; k < 2; ++k) {
-        const double* v = X + 3 * faces_[3 * f + 1 + k];
-        for (int d = 0; d < 3; ++d) e[k][d] = cmp::minimum_image(v[d] - a[d], periods[d], inverse[d]);
-      }
-      for (int d = 0; d < 3; ++d) g[d] = (e[0][d] + e[1][d]) / 3.0;
-      double r2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-      for (int k = 0; k < 2; ++k) {
-        const double dx = e[k][0] - g[0], dy = e[k][1] - g[1], dz = e[k][2] - g[2];
-        r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
-      }
-      double* b = bounds_.data() + 4 * f;
-      for (int d = 0; d < 3; ++d) b[d] = a[d] + g[d];
-      b[3] = std::sqrt(r2) * (1.0 + 1e-12) + delta_;  // the reach of the sphere: delta beyond it
-    }
-  });
-  // The shift of each image code (box sides times -1, 0, 1 per axis).
-  double shifts[27][3];
-  for (int code = 0; code < 27; ++code)
-    for (int a = 0, c = code; a < 3; ++a, c /= 3) shifts[code][a] = (c % 3 - 1) * periods[a];
-  for_each_chunk(chunks, parallel, [&](int c) {
+  for_each_chunk(chunks, parallel(), [&](int c) {
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       const double* p = X + 3 * i;
       for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
         const int f = candidates_[s];
-        const int code = candidate_images_[s];
-        // Positions relative to p in the candidate's image: the list's shift, or (a triangle
-        // cut by the box) each corner's own minimum image.
-        const auto relative = [&](const double* v, double out[3]) {
-          if (code != kStraddles)
-            for (int a = 0; a < 3; ++a) out[a] = v[a] - p[a] + shifts[code][a];
-          else
-            for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
-        };
-        const double* sphere = bounds_.data() + 4 * f;
-        double centre[3];
-        relative(sphere, centre);
-        if (!(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2] < sphere[3] * sphere[3])) continue;
-        Eigen::Vector3d corner[3];
-        for (int k = 0; k < 3; ++k) relative(X + 3 * faces_[3 * f + k], corner[k].data());
-        const Eigen::Vector3d w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
-        const Eigen::Vector3d q = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+        Eigen::Vector3d w;
+        const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, candidate_images_[s], kStraddles, w);
         const double d2 = q.squaredNorm();
         if (!(d2 < delta2)) continue;
         out.push_back({static_cast<int>(i), f, {w[0], w[1], w[2]}, {-q[0], -q[1], -q[2]}, std::sqrt(d2)});
