@@ -14,6 +14,8 @@
 # jamming to phi = COMPRESS_HIGH_PHI (0.95) in steps of 0.05, analysed:
 # $out/compress/faces<N>/{compress.csv,structure.csv,dz_fit.csv,shape_fit.csv} and the table
 # $out/compress/faces<N>/table.md (about 30 minutes at 32 x 642 on a quiet machine).
+# Every compression checkpoints; COMPRESS_RESUME=1 continues the ones an interruption stopped
+# (long runs: COMPRESS_LEVEL=5, the thesis's 2562 vertices per shell).
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
@@ -25,20 +27,33 @@ high_n=${COMPRESS_HIGH_N:-32}
 high_phi=${COMPRESS_HIGH_PHI:-0.95}
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin="$build/bin"
-# start DIR N: a jammed packing of N spheres and the cell in DIR, no packings of an earlier run.
-start() {
-  mkdir -p "$1"
-  "$bin/shellpack" jam -N "$2" --seed "$seed" -q -o "$1/jam.xyz" --csv "$1/jam.csv"
-  "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$1/cell.off"
-  rm -f "$1"/pack_*.off
+# compress DIR N OPTIONS...: one jammed packing of N spheres and the cell in DIR, the shells
+# compressed from it with OPTIONS, a checkpoint every few minutes in DIR/compress.chk, the rows
+# in DIR/compress.csv (written whole at the end). With COMPRESS_RESUME=1, a run interrupted
+# before it finished (DIR/compress.chk without DIR/compress.csv) goes on from its checkpoint to
+# the same files; otherwise everything of an earlier run in DIR is replaced.
+compress() {
+  local dir=$1 n=$2
+  shift 2
+  mkdir -p "$dir"
+  if [ "${COMPRESS_RESUME:-0}" = 1 ] && [ -s "$dir/compress.chk" ] && [ ! -s "$dir/compress.csv" ]; then
+    echo "   resuming from $dir/compress.chk" >&2
+    "$bin/shellpack" compress --resume "$dir/compress.chk" -q >"$dir/compress.csv.part"
+  else
+    rm -f "$dir"/pack_*.off "$dir/compress.csv" "$dir/compress.chk"
+    "$bin/shellpack" jam -N "$n" --seed "$seed" -q -o "$dir/jam.xyz" --csv "$dir/jam.csv"
+    "$bin/rndmesh" icosa --level "$level" --radius 0.5 -q -o "$dir/cell.off"
+    "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" -o "$dir/pack_{phi}.off" \
+      --checkpoint "$dir/compress.chk" "$@" -q >"$dir/compress.csv.part"
+  fi
+  mv "$dir/compress.csv.part" "$dir/compress.csv"
+  rm -f "$dir/compress.chk"
 }
 runs="" labels=""
 for n in $sizes; do
   dir="$out/compress/N$n"
   echo "== N = $n: shellpack jam, rndmesh icosa --level $level, shellpack compress" >&2
-  start "$dir" "$n"
-  "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact "$contact" \
-    --dphi 0.001,0.01,0.05,0.1,0.15,0.2,0.25,0.3 -o "$dir/pack_{phi}.off" -q >"$dir/compress.csv"
+  compress "$dir" "$n" --contact "$contact" --dphi 0.001,0.01,0.05,0.1,0.15,0.2,0.25,0.3
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
   # g(r) in units of the contact envelope sigma = D0 + reach (2 R_v of the vertex spheres, or
   # delta of the faces: the jammed spheres' diameter), where the thesis's sigma = D0 puts its
@@ -73,9 +88,7 @@ fi
 if [ "$high_n" -gt 0 ]; then
   dir="$out/compress/faces$high_n"
   echo "== towards confluence: $high_n shells, hertz-faces, to phi = $high_phi" >&2
-  start "$dir" "$high_n"
-  "$bin/shellpack" compress "$dir/jam.xyz" --mesh "$dir/cell.off" --seed "$seed" --contact hertz-faces \
-    --phi "0.6:$high_phi:0.05" -o "$dir/pack_{phi}.off" --timings -q >"$dir/compress.csv"
+  compress "$dir" "$high_n" --contact hertz-faces --phi "0.6:$high_phi:0.05" --timings
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
   # The same laws as above from this run's steps: dZ near jamming and the shapes.
   "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y dZ --where 'dZ>0' --where 'dphi<=0.15' \
