@@ -14,8 +14,10 @@
 # jamming to phi = COMPRESS_HIGH_PHI (0.95) in steps of 0.05, analysed:
 # $out/compress/faces<N>/{compress.csv,structure.csv,dz_fit.csv,shape_fit.csv} and the table
 # $out/compress/faces<N>/table.md (about 30 minutes at 32 x 642 on a quiet machine).
-# Every compression checkpoints; COMPRESS_RESUME=1 continues the ones an interruption stopped
-# (long runs: COMPRESS_LEVEL=5, the thesis's 2562 vertices per shell).
+# The faces run is drawn as the N runs are: $out/shell_compress_faces.png (g(r) at phi = 0.6,
+# 0.7, 0.8 and 0.9).
+# Every compression checkpoints; COMPRESS_RESUME=1 keeps finished runs and continues the ones
+# an interruption stopped (long runs: COMPRESS_LEVEL=5, the thesis's 2562 vertices per shell).
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
@@ -29,14 +31,18 @@ src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bin="$build/bin"
 # compress DIR N OPTIONS...: one jammed packing of N spheres and the cell in DIR, the shells
 # compressed from it with OPTIONS, a checkpoint every few minutes in DIR/compress.chk, the rows
-# in DIR/compress.csv (written whole at the end). With COMPRESS_RESUME=1, a run interrupted
-# before it finished (DIR/compress.chk without DIR/compress.csv) goes on from its checkpoint to
-# the same files; otherwise everything of an earlier run in DIR is replaced.
+# in DIR/compress.csv (written whole at the end). With COMPRESS_RESUME=1, a finished run
+# (DIR/compress.csv) is kept and one interrupted before it finished (DIR/compress.chk without
+# DIR/compress.csv) goes on from its checkpoint to the same files; otherwise everything of an
+# earlier run in DIR is replaced.
 compress() {
   local dir=$1 n=$2
   shift 2
   mkdir -p "$dir"
-  if [ "${COMPRESS_RESUME:-0}" = 1 ] && [ -s "$dir/compress.chk" ] && [ ! -s "$dir/compress.csv" ]; then
+  if [ "${COMPRESS_RESUME:-0}" = 1 ] && [ -s "$dir/compress.csv" ]; then
+    echo "   $dir/compress.csv is complete: kept" >&2
+    return
+  elif [ "${COMPRESS_RESUME:-0}" = 1 ] && [ -s "$dir/compress.chk" ]; then
     echo "   resuming from $dir/compress.chk" >&2
     "$bin/shellpack" compress --resume "$dir/compress.chk" -q >"$dir/compress.csv.part"
   else
@@ -90,6 +96,9 @@ if [ "$high_n" -gt 0 ]; then
   echo "== towards confluence: $high_n shells, hertz-faces, to phi = $high_phi" >&2
   compress "$dir" "$high_n" --contact hertz-faces --phi "0.6:$high_phi:0.05" --timings
   "$bin/shellpack" analyze "$dir"/pack_*.off -q >"$dir/structure.csv"
+  reach=$(sed -n 's/^# contact_distance=//p' "$(ls "$dir"/pack_*.off | head -1)")
+  "$bin/shellpack" analyze "$dir"/pack_*.off --d0 "$(awk -v r="$reach" 'BEGIN { printf "%.6f", 1 + r }')" \
+    --rdf "$dir/rdf.csv" -q >/dev/null
   # The same laws as above from this run's steps: dZ near jamming and the shapes.
   "$bin/kcfit" "$dir/compress.csv" --model power --x dphi --y dZ --where 'dZ>0' --where 'dphi<=0.15' \
     -q -o "$dir/dz_fit.csv"
@@ -103,4 +112,12 @@ if [ "$high_n" -gt 0 ]; then
     "$dir/structure.csv" >"$dir/table.md"
   cat "$dir/table.md"
   echo "make compress-figures: $dir/table.md" >&2
+  packs="" packlabels=""
+  for phi in 0.6 0.7 0.8 0.9; do
+    [ -s "$dir/pack_$phi.off" ] || continue
+    packs="$packs $dir/pack_$phi.off" packlabels="$packlabels $phi"
+  done
+  gnuplot -e "runs='$dir'; labels='N=$high_n'; packs='${packs# }'; packlabels='${packlabels# }'; packvar='{/Symbol f}'; out='$out/shell_compress_faces.png'" \
+    "$src/scripts/plot_compress.gp"
+  echo "make compress-figures: $out/shell_compress_faces.png" >&2
 fi

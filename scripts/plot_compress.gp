@@ -4,7 +4,8 @@
 # Usage: gnuplot -e "runs='dir1 dir2'; labels='N=32 N=50'; packs='a.off b.off'; packlabels='0.001 0.3'; out='x.png'" plot_compress.gp
 # Each run directory holds compress.csv, structure.csv, rdf.csv and dz_fit.csv; packs names
 # packings of the first run (as in rdf.csv's file column) whose g(r) is drawn, packlabels
-# their dphi.
+# their dphi (or, with packvar='{/Symbol f}', their phi).
+if (!exists("packvar")) packvar = "{/Symbol df}"
 set terminal pngcairo size 1500,900 enhanced font "Sans,10"
 set output out
 set datafile separator ","
@@ -59,7 +60,7 @@ set yrange [0:*]
 plot for [k = 1:nruns] file(k, "compress.csv") using "phi":"turgor_mean_P0" with lines lw 2 lc k title label(k), \
      for [k = 1:nruns] file(k, "compress.csv") using "phi":(10 * column("turgor_cv")) with lines dt 2 lc k title "cv x 10"
 
-set title "Fig. 4.3a: g(r) of the shell centres ({/Symbol s} = D_0 + 2 R_v, the contact distance)"
+set title "Fig. 4.3a: g(r) of the shell centres ({/Symbol s} = D_0 + the contact reach)"
 set xlabel "r / {/Symbol s}"
 set ylabel "g(r)"
 set xrange [0.5:2.5]
@@ -67,7 +68,7 @@ set yrange [0:12]
 set arrow 1 from sqrt(3), graph 0 to sqrt(3), graph 1 nohead dt 2 lc rgb "#888888"
 set arrow 2 from 2, graph 0 to 2, graph 1 nohead dt 2 lc rgb "#888888"
 plot for [k = 1:words(packs)] file(1, "rdf.csv") using (strcol("file") eq word(packs, k) ? column("r_d0") : 1/0):"g" \
-       with lines lw 1.5 lc k title sprintf("%s, {/Symbol df} = %s", label(1), word(packlabels, k))
+       with lines lw 1.5 lc k title sprintf("%s, %s = %s", label(1), packvar, word(packlabels, k))
 unset arrow 1
 unset arrow 2
 
