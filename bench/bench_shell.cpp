@@ -7,14 +7,20 @@
 //   bench_shell inflate LEVEL   one inflation to equilibrium (for perf and the threads-under-load table)
 //   bench_shell contacts LEVEL  ns per vertex of add_gradient of hertz-vertices and hertz-faces on
 //                               50 shells (D0 = 1) in a periodic box: spheres just touching, and
-//                               cubes with every facet in contact (the confluent limit)
+//                               cubes with every facet in contact (the confluent limit); and the
+//                               check that no vertex lies inside another shell on both, beside
+//                               the winding numbers it replaced (5 of the 50 shells, times 10)
 #include "shell/hertz_contacts.hpp"
+#include "shell/penetration.hpp"
 #include "shell/relax.hpp"
 #include "shell/shell_packing.hpp"
 #include "shell/vertex_face_contacts.hpp"
 #include "shell/shell_model.hpp"
 
 #include "spheremesh/subdivision.hpp"
+
+#include "core/minimum_image.hpp"
+#include "mesh/point_in_mesh.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -119,6 +125,32 @@ void contacts(int level) {
                 spheres.touches(x).size());
     std::printf("gradient_hertz_faces_%s_%ld,%.1f,ns/vertex (%zu contacts)\n", shape.c_str(), n, 1e9 * tf / n,
                 faces.touches(x).size());
+    // The penetration check as compress runs it after every step, and the winding number of
+    // every vertex in a shell's bounding sphere (the check before the ray-crossing query).
+    const Eigen::VectorXd xv = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    const auto shells = shell::shell_partition(m.F, static_cast<int>(n));
+    std::size_t found = 0;
+    const double tp = per_call([&] { found = shell::penetrations(xv, m.F, shells, p.box).size(); });
+    const auto t0 = std::chrono::steady_clock::now();
+    long tested = 0, inside = 0;
+    for (int k = 0; k < 5; ++k) {
+      const mesh::FaceMatrix Fs = m.F.middleRows(k * nf, nf);
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      double reach = 0;
+      for (long v = k * nv; v < (k + 1) * nv; ++v) centre += xv.segment<3>(3 * v) / static_cast<double>(nv);
+      for (long v = k * nv; v < (k + 1) * nv; ++v) reach = std::max(reach, (xv.segment<3>(3 * v) - centre).norm());
+      for (long v = 0; v < n; ++v) {
+        if (v / nv == k) continue;
+        Eigen::Vector3d d = xv.segment<3>(3 * v) - centre;
+        for (int a = 0; a < 3; ++a) d[a] = minimum_image(d[a], (*p.box)[a]);
+        if (d.norm() > reach) continue;
+        ++tested;
+        inside += mesh::winding_number(xv.data(), Fs, 0, nf, centre + d) > 0.5;
+      }
+    }
+    std::printf("penetration_check_%s_%ld,%.1f,ms (%zu inside; winding numbers: %.0f ms, %ld tests in 5 of 50 shells "
+                "(%ld inside), times 10)\n",
+                shape.c_str(), n, 1e3 * tp, found, 1e4 * seconds_since(t0), tested, inside);
   }
 }
 

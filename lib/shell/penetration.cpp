@@ -1,7 +1,7 @@
 #include "shell/penetration.hpp"
 
 #include "core/minimum_image.hpp"
-#include "mesh/point_in_mesh.hpp"
+#include "mesh/inside_query.hpp"
 
 #include <algorithm>
 
@@ -25,21 +25,35 @@ std::vector<Penetration> penetrations(const Eigen::VectorXd& x, const mesh::Face
     const int s = shells.vertex_shell[v];
     reach[s] = std::max(reach[s], (x.segment<3>(3 * v) - centre[s]).norm());
   }
+  std::vector<std::vector<int>> vertices(static_cast<std::size_t>(k));
+  for (long v = 0; v < n; ++v) vertices[shells.vertex_shell[v]].push_back(static_cast<int>(v));
+  // The image of t's centre nearest s's, relative to it.
+  const auto offset = [&](int s, int t) {
+    Eigen::Vector3d d = centre[t] - centre[s];
+    if (box)
+      for (int a = 0; a < 3; ++a)
+        if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
+    return d;
+  };
   std::vector<std::vector<Penetration>> found(static_cast<std::size_t>(k));
 #pragma omp parallel for schedule(dynamic, 1)
   for (int s = 0; s < k; ++s) {
     mesh::FaceMatrix Fs(static_cast<Eigen::Index>(faces[s].size()), 3);
     for (std::size_t f = 0; f < faces[s].size(); ++f) Fs.row(static_cast<Eigen::Index>(f)) = F.row(faces[s][f]);
-    for (long v = 0; v < n; ++v) {
-      if (shells.vertex_shell[v] == s) continue;
-      Eigen::Vector3d d = x.segment<3>(3 * v) - centre[s];
-      if (box)
-        for (int a = 0; a < 3; ++a)
-          if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
-      if (d.norm() > reach[s]) continue;
-      if (mesh::winding_number(x.data(), Fs, 0, Fs.rows(), centre[s] + d) > 0.5)
-        found[s].push_back({static_cast<int>(v), shells.vertex_shell[v], s});
+    const mesh::InsideQuery inside(x.data(), Fs, 0, Fs.rows());
+    for (int t = 0; t < k; ++t) {
+      // Only shells whose bounding spheres meet s's can reach into it.
+      if (t == s || offset(s, t).norm() > reach[s] + reach[t]) continue;
+      for (int v : vertices[t]) {
+        Eigen::Vector3d d = x.segment<3>(3 * v) - centre[s];
+        if (box)
+          for (int a = 0; a < 3; ++a)
+            if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
+        if (d.norm() > reach[s]) continue;
+        if (inside.inside(centre[s] + d)) found[s].push_back({v, t, s});
+      }
     }
+    std::sort(found[s].begin(), found[s].end(), [](const Penetration& a, const Penetration& b) { return a.vertex < b.vertex; });
   }
   std::vector<Penetration> all;
   for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());

@@ -1,10 +1,11 @@
 #pragma once
 // Do shells pass through each other? A vertex of one shell inside another shell's closed
-// surface (mesh/point_in_mesh.hpp: the winding number), with the minimum image in a periodic
+// surface (mesh/inside_query.hpp: crossings of a ray over a grid of the faces, the winding
+// number where a crossing is too close to call), with the minimum image in a periodic
 // box: each shell is taken whole (its vertices unwrapped, as the compress driver keeps them)
 // and a vertex of another shell is brought to the image nearest the shell's centre first.
-// Only vertices within a shell's bounding sphere are tested, so the cost is about (vertices
-// near a shell) x (its faces) per shell; shells run on all threads (the count is the same).
+// Only vertices within a shell's bounding sphere are tested, each against the few faces over
+// it; shells run on all threads (the count is the same).
 #include "shell/shell_partition.hpp"
 
 #include "mesh/tri_mesh.hpp"
