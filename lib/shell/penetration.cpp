@@ -1,7 +1,7 @@
 #include "shell/penetration.hpp"
 
-#include "core/minimum_image.hpp"
 #include "mesh/inside_query.hpp"
+#include "neighbours/box.hpp"
 
 #include <algorithm>
 
@@ -27,13 +27,11 @@ std::vector<Penetration> penetrations(const Eigen::VectorXd& x, const mesh::Face
   }
   std::vector<std::vector<int>> vertices(static_cast<std::size_t>(k));
   for (long v = 0; v < n; ++v) vertices[shells.vertex_shell[v]].push_back(static_cast<int>(v));
-  // The image of t's centre nearest s's, relative to it.
-  const auto offset = [&](int s, int t) {
-    Eigen::Vector3d d = centre[t] - centre[s];
-    if (box)
-      for (int a = 0; a < 3; ++a)
-        if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
-    return d;
+  // A separation reduced to its minimum image (unchanged without a box).
+  std::optional<neighbours::Box> images;
+  if (box) images = neighbours::Box{Eigen::Vector3d::Zero(), *box, periodic};
+  const auto nearest_image = [&](const Eigen::Vector3d& d) -> Eigen::Vector3d {
+    return images ? images->minimum_image(d) : d;
   };
   std::vector<std::vector<Penetration>> found(static_cast<std::size_t>(k));
 #pragma omp parallel for schedule(dynamic, 1)
@@ -43,12 +41,9 @@ std::vector<Penetration> penetrations(const Eigen::VectorXd& x, const mesh::Face
     const mesh::InsideQuery inside(x.data(), Fs, 0, Fs.rows());
     for (int t = 0; t < k; ++t) {
       // Only shells whose bounding spheres meet s's can reach into it.
-      if (t == s || offset(s, t).norm() > reach[s] + reach[t]) continue;
+      if (t == s || nearest_image(centre[t] - centre[s]).norm() > reach[s] + reach[t]) continue;
       for (int v : vertices[t]) {
-        Eigen::Vector3d d = x.segment<3>(3 * v) - centre[s];
-        if (box)
-          for (int a = 0; a < 3; ++a)
-            if (periodic[a]) d[a] = minimum_image(d[a], (*box)[a]);
+        const Eigen::Vector3d d = nearest_image(x.segment<3>(3 * v) - centre[s]);
         if (d.norm() > reach[s]) continue;
         if (inside.inside(centre[s] + d)) found[s].push_back({v, t, s});
       }
