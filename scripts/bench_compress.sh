@@ -2,7 +2,8 @@
 # make bench, compress: shellpack compress as a user runs it, from a jammed packing (N = 16 by
 # default; 50 with BENCH_COMPRESS_LARGE=1) with icosahedral shells, the default box step
 # (0.004 D0), tolerance and constant volume: time per box step and FIRE iterations per second
-# over the first steps after jamming (step 0, the inflation, left out), on 1 and 2 threads.
+# over the first steps after jamming (step 0, the inflation, left out), on 1 and 2 threads;
+# then the wall time of a whole compression to phi = 0.95 (16 x 642, hertz-faces).
 # Sourced by scripts/bench.sh ($build, $out, $machine, $stamp).
 echo "== shellpack compress: time per box step and FIRE iterations per second" >&2
 cmp_work=$(mktemp -d)
@@ -32,4 +33,27 @@ PY
   for threads in 1 2; do compress_row 16 4 20 $threads; done
   if [ "${BENCH_COMPRESS_LARGE:-0}" = 1 ]; then compress_row 50 5 3 2; fi
 } | tee "$out/compress_steps.csv" >&2
+# A whole compression as a user runs one towards confluence: 16 x 642 shells with hertz-faces
+# from jamming to phi = 0.95, the penetration check after every step, on all threads; wall
+# time of the process (mesh and packing made beforehand).
+echo "== shellpack compress: 16 x 642 shells with faces, jamming to phi 0.95" >&2
+{
+  echo "# machine=$machine"
+  echo "# date=$stamp"
+  echo "shells,vertices_per_shell,contact,threads,phi_start,phi_end,steps,fire_iterations,volume_updates,wall_seconds"
+  start=$(date +%s.%N)
+  "$build/bin/shellpack" compress "$cmp_work/j16.xyz" --mesh "$cmp_work/ico4.off" --contact hertz-faces \
+    --phi 0.95 -q --csv "$cmp_work/w.csv"
+  end=$(date +%s.%N)
+  /usr/bin/python3 - "$cmp_work/w.csv" "$start" "$end" "$(nproc)" <<'PY'
+import csv, sys
+path, start, end, threads = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+meta = {l[2:].split("=", 1)[0]: l[2:].split("=", 1)[1].strip() for l in open(path) if l.startswith("# ")}
+rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+its = sum(int(r["iterations"]) for r in rows)
+upd = sum(int(r["volume_updates"]) for r in rows)
+print(f"16,{meta['vertices_per_shell']},hertz-faces,{threads},{float(rows[0]['phi']):.4f},{float(rows[-1]['phi']):.4f},"
+      f"{len(rows) - 1},{its},{upd},{end - start:.1f}")
+PY
+} | tee "$out/compress_whole.csv" >&2
 rm -rf "$cmp_work"
