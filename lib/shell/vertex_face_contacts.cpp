@@ -51,30 +51,38 @@ void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool
 }
 
 namespace {
-// The periods of the minimum image along each axis (0 along an open one) and their inverses.
-struct Periods {
-  double length[3], inverse[3];
-  explicit Periods(const std::optional<ShellContactTerm::BoxSides>& box) {
+// The periodic images of the box: the periods of the minimum image (0 along an open axis),
+// their inverses, and the shift of each image code (box sides times -1, 0, 1 per axis).
+struct Images {
+  double periods[3], inverse[3], shifts[27][3];
+  explicit Images(const std::optional<ShellContactTerm::BoxSides>& box) {
     for (int a = 0; a < 3; ++a) {
       const bool wraps = box && box->periodic[a];
-      length[a] = wraps ? box->lengths[a] : 0.0;
+      periods[a] = wraps ? box->lengths[a] : 0.0;
       inverse[a] = wraps ? 1.0 / box->lengths[a] : 0.0;
     }
+    for (int code = 0; code < 27; ++code)
+      for (int a = 0, c = code; a < 3; ++a, c /= 3) shifts[code][a] = (c % 3 - 1) * periods[a];
+  }
+  // v - p in a candidate's image: the list's shift, or (code `straddles`, a triangle cut by
+  // the box) each corner's own minimum image.
+  void relative(const double* v, const double* p, int code, int straddles, double out[3]) const {
+    if (code != straddles)
+      for (int a = 0; a < 3; ++a) out[a] = v[a] - p[a] + shifts[code][a];
+    else
+      for (int a = 0; a < 3; ++a) out[a] = cmp::minimum_image(v[a] - p[a], periods[a], inverse[a]);
   }
 };
 
-using Image = std::array<std::int8_t, 3>;
-
-// The point q of a triangle closest to p, relative to p (q - p), and its weights, from the
-// triangle's frame, its corner a and the image of a seen from p. The same operations in the
-// list's build and in every evaluation: a contact the list keeps is found with the same bits.
-inline Eigen::Vector3d closest_offset(const TriangleFrame& t, const double* a, const double* p, const Image& image,
-                                      const Periods& periods, Eigen::Vector3d& w) {
-  double m[3];  // a - p in a's image
-  for (int k = 0; k < 3; ++k) m[k] = a[k] - p[k] + image[k] * periods.length[k];
-  w = closest_weights_in_frame(t, m);
-  return {m[0] + w[1] * t.ab[0] + w[2] * t.ac[0], m[1] + w[1] * t.ab[1] + w[2] * t.ac[1],
-          m[2] + w[1] * t.ab[2] + w[2] * t.ac[2]};
+// The point q of the triangle `corners` closest to p, relative to p (q - p), and its weights.
+// The same operations in the list's build and in every evaluation: a contact the list keeps is
+// found with the same bits.
+inline Eigen::Vector3d closest_offset(const Images& images, const double* X, const int* corners, const double* p,
+                                      int code, int straddles, Eigen::Vector3d& w) {
+  Eigen::Vector3d corner[3];
+  for (int k = 0; k < 3; ++k) images.relative(X + 3 * corners[k], p, code, straddles, corner[k].data());
+  w = closest_triangle_weights(Eigen::Vector3d::Zero(), corner[0], corner[1], corner[2]);
+  return w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
 }
 }  // namespace
 
@@ -84,32 +92,12 @@ bool VertexFaceContacts::parallel() const {
   return 2 * static_cast<long>(shell_of_.size()) >= ElementAssembly::parallel_elements();
 }
 
-void VertexFaceContacts::build_frames(const double* X) const {
-  const Periods periods(box_);
-  const long nf = static_cast<long>(faces_.size() / 3);
-  frames_.resize(static_cast<std::size_t>(nf));
-  const int chunks = static_cast<int>(std::max<long>(1, (nf + kChunkVertices - 1) / kChunkVertices));
-  for_each_chunk(chunks, parallel(), [&](int c) {
-    for (long f = chunk_begin(nf, chunks, c), end = chunk_begin(nf, chunks, c + 1); f < end; ++f) {
-      const double* a = X + 3 * faces_[3 * f];
-      const double* b = X + 3 * faces_[3 * f + 1];
-      const double* cc = X + 3 * faces_[3 * f + 2];
-      double ab[3], ac[3];
-      for (int k = 0; k < 3; ++k) {
-        ab[k] = cmp::minimum_image(b[k] - a[k], periods.length[k], periods.inverse[k]);
-        ac[k] = cmp::minimum_image(cc[k] - a[k], periods.length[k], periods.inverse[k]);
-      }
-      frames_[static_cast<std::size_t>(f)] = triangle_frame(ab, ac);
-    }
-  });
-}
-
 void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   scratch_.resize(n, 3);
   std::copy(x.begin(), x.end(), scratch_.data());
-  const Periods images(box_);
-  const double* periods = images.length;
+  const Images images(box_);
+  const double* periods = images.periods;
   const double* inverse = images.inverse;
   const double* X = scratch_.data();
   // reach_ per vertex: delta + the longest edge of its triangles (minimum image: a shell may
@@ -155,20 +143,20 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   std::vector<int> next(partner_start.begin(), partner_start.end() - 1);
   for (std::size_t k = 0; k < pairs_.size(); k += 2) partners[next[pairs_[k]]++] = pairs_[k + 1];
   // Narrow phase, per fixed chunk of vertices on all threads: the triangles around each
-  // vertex's partners, ascending, each once, with the periodic image of their corner a seen
-  // from x_i (fixed while the list holds: every candidate lies far inside half a box side, and
-  // the frame's edges are minimum images); kept only when the triangle is within delta + skin
-  // of x_i. Chunks are joined in order: the same list on any thread count.
+  // vertex's partners, ascending, each once, with their periodic image seen from x_i (fixed
+  // while the list holds: every candidate lies far inside half a box side; code (n_x + 1) +
+  // 3 (n_y + 1) + 9 (n_z + 1) for a shift of n box sides, or kStraddles when the corners sit in
+  // different images); kept only when the triangle is within delta + skin of x_i. Chunks are
+  // joined in order: the same list on any thread count.
   const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
   std::vector<std::vector<int>> kept(static_cast<std::size_t>(chunks));
-  std::vector<std::vector<Image>> kept_images(static_cast<std::size_t>(chunks));
-  std::vector<char> far_image(static_cast<std::size_t>(chunks), 0);
+  std::vector<std::vector<std::uint8_t>> kept_images(static_cast<std::size_t>(chunks));
   candidate_start_.assign(static_cast<std::size_t>(n) + 1, 0);
   const double keep2 = (delta_ + skin) * (delta_ + skin);
   for_each_chunk(chunks, parallel(), [&](int c) {
     std::vector<int> mine;
     std::vector<int>& faces = kept[static_cast<std::size_t>(c)];
-    std::vector<Image>& codes = kept_images[static_cast<std::size_t>(c)];
+    std::vector<std::uint8_t>& codes = kept_images[static_cast<std::size_t>(c)];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       mine.clear();
       for (int t = partner_start[i]; t < partner_start[i + 1]; ++t) {
@@ -180,27 +168,29 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
       const double* p = X + 3 * i;
       int count = 0;
       for (int f : mine) {
-        const double* a = X + 3 * faces_[3 * f];
-        Image image{0, 0, 0};
-        for (int k = 0; k < 3; ++k) {
-          const double raw = a[k] - p[k];
-          const long shift =
-              periods[k] > 0 ? std::lround((cmp::minimum_image(raw, periods[k], inverse[k]) - raw) / periods[k]) : 0;
-          if (shift < -100 || shift > 100) far_image[static_cast<std::size_t>(c)] = 1;
-          image[k] = static_cast<std::int8_t>(std::clamp(shift, -100L, 100L));
+        int code = -1;
+        for (int k = 0; k < 3 && code != kStraddles; ++k) {
+          const double* v = X + 3 * faces_[3 * f + k];
+          int cc = 0;
+          for (int a = 2; a >= 0; --a) {
+            const double raw = v[a] - p[a];
+            const long shift =
+                periods[a] > 0 ? std::lround((cmp::minimum_image(raw, periods[a], inverse[a]) - raw) / periods[a]) : 0;
+            cc = 3 * cc + static_cast<int>(shift + 1);
+            if (shift < -1 || shift > 1) cc = -1000;
+          }
+          code = cc < 0 || (code >= 0 && code != cc) ? kStraddles : cc;
         }
         Eigen::Vector3d w;
-        const Eigen::Vector3d q = closest_offset(frames_[static_cast<std::size_t>(f)], a, p, image, images, w);
+        const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, code, kStraddles, w);
         if (!(q.squaredNorm() < keep2)) continue;
         faces.push_back(f);
-        codes.push_back(image);
+        codes.push_back(static_cast<std::uint8_t>(code));
         ++count;
       }
       candidate_start_[i + 1] = count;
     }
   });
-  if (std::find(far_image.begin(), far_image.end(), 1) != far_image.end())
-    throw ComputationError("hertz-faces: vertices more than 100 box sides apart (positions not kept near the box)");
   for (Eigen::Index v = 0; v < n; ++v) candidate_start_[v + 1] += candidate_start_[v];
   candidates_.clear();
   candidate_images_.clear();
@@ -232,10 +222,9 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
   records_.resize(static_cast<std::size_t>(chunks));
   for (auto& r : records_) r.clear();
   if (n == 0 || faces_.empty()) return;
-  const double* X = x.data();
-  build_frames(X);
   if (!candidates_hold(x)) build_candidates(x);
-  const Periods periods(box_);
+  const Images images(box_);
+  const double* X = x.data();
   const double delta2 = delta_ * delta_;
   for_each_chunk(chunks, parallel(), [&](int c) {
     std::vector<Record>& out = records_[static_cast<std::size_t>(c)];
@@ -244,8 +233,7 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
       for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
         const int f = candidates_[s];
         Eigen::Vector3d w;
-        const Eigen::Vector3d q = closest_offset(frames_[static_cast<std::size_t>(f)], X + 3 * faces_[3 * f], p,
-                                                 candidate_images_[s], periods, w);
+        const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, candidate_images_[s], kStraddles, w);
         const double d2 = q.squaredNorm();
         if (!(d2 < delta2)) continue;
         out.push_back({static_cast<int>(i), f, {w[0], w[1], w[2]}, {-q[0], -q[1], -q[2]}, std::sqrt(d2)});
@@ -270,25 +258,17 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   check_sizes(x, g);
   collect(x);
   double* G = g.data();
-  // dU/dp = -U'(h) d/r on the pushed vertex: per chunk on all threads (a chunk's records push
-  // only its own vertices), leaving dU/dp in the record for its triangle.
-  const int chunks = static_cast<int>(records_.size());
-  for_each_chunk(chunks, parallel(), [&](int c) {
-    for (Record& r : records_[static_cast<std::size_t>(c)]) {
-      // p on the triangle: no direction (a set of measure zero).
-      const double s = r.r > 0 ? -hertz_force(delta_ - r.r, estar_, rstar_) / r.r : 0.0;
-      for (int a = 0; a < 3; ++a) {
-        r.d[a] *= s;
-        G[3 * r.i + a] += r.d[a];
-      }
-    }
-  });
-  // Each corner k takes -w_k dU/dp: on one thread, in record order (corners are anywhere).
   for (const auto& chunk : records_)
     for (const Record& r : chunk) {
+      if (!(r.r > 0)) continue;  // p on the triangle: no direction (a set of measure zero)
+      // dU/dp = -U'(h) d/r; each corner k takes -w_k dU/dp.
+      const double s = -hertz_force(delta_ - r.r, estar_, rstar_) / r.r;
       const int* corner = faces_.data() + 3 * r.face;
-      for (int k = 0; k < 3; ++k)
-        for (int a = 0; a < 3; ++a) G[3 * corner[k] + a] -= r.w[k] * r.d[a];
+      for (int a = 0; a < 3; ++a) {
+        const double gp = s * r.d[a];
+        G[3 * r.i + a] += gp;
+        for (int k = 0; k < 3; ++k) G[3 * corner[k] + a] -= r.w[k] * gp;
+      }
     }
 }
 

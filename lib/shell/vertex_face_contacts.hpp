@@ -34,11 +34,9 @@
 // changed; every evaluation then tests only triangles within a skin of contact. The box is
 // the vertices' bounding box, or, once set_box() gave one, [0, L) with the minimum image along
 // its periodic axes: the interface of ShellContactTerm, as VertexContacts, so a packing run can
-// take either style. Each evaluation first makes every triangle's frame (its edges and their
-// Gram matrix, TriangleFrame), so a candidate costs two dot products. Vertices are handled in
-// fixed chunks on all threads; energies are summed per chunk in chunk order, the push on each
-// vertex is added by its chunk and the reactions on triangle corners on one thread in chunk
-// order: the same bits for any thread count.
+// take either style. Vertices are handled in fixed chunks on all threads; energies are summed
+// per chunk in chunk order and the forces added on one thread in chunk order: the same bits
+// for any thread count.
 #include "shell/energy_term.hpp"
 #include "shell/hertz_contacts.hpp"
 #include "shell/shell_parameters.hpp"
@@ -60,21 +58,6 @@ namespace cmp::shell {
 // on its edges.
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                                 const Eigen::Vector3d& b, const Eigen::Vector3d& c);
-
-// A triangle seen from its corner a: its edges ab = b - a and ac = c - a and their Gram
-// matrix. Made once per evaluation for every triangle; each of the several vertices near it
-// then costs two dot products (closest_weights_in_frame) instead of the six of the corner form.
-struct TriangleFrame {
-  double ab[3], ac[3];
-  double g11, g12, g22, det;  // ab.ab, ab.ac, ac.ac and g11 g22 - g12^2 (4 area^2)
-};
-inline TriangleFrame triangle_frame(const double ab[3], const double ac[3]);
-
-// The weights of closest_triangle_weights(p, a, b, c), from the frame and a - p: the same
-// regions with every dot product written through d1 = ab.(p - a), d2 = ac.(p - a) and the Gram
-// matrix (ab.(p - b) = d1 - g11, ...), which also removes the cancellation of the corner form's
-// area products (d1 d4 - d3 d2 = g11 d2 - g12 d1, ...).
-inline Eigen::Vector3d closest_weights_in_frame(const TriangleFrame& t, const double a_minus_p[3]);
 
 class VertexFaceContacts final : public ShellContactTerm {
  public:
@@ -114,7 +97,7 @@ class VertexFaceContacts final : public ShellContactTerm {
  private:
   struct Record {
     int i, face;
-    double w[3], d[3], r;  // d = x_i - q (add_gradient turns it into dU/dx_i)
+    double w[3], d[3], r;
   };
   // Fills records_ (one list per fixed chunk of vertices) with every contact at x.
   void collect(std::span<const double> x) const;
@@ -133,12 +116,9 @@ class VertexFaceContacts final : public ShellContactTerm {
   // less per evaluation and are rebuilt more often. 16 x 642 shells compressed with faces from
   // jamming to phi = 0.9 (2 threads): 0.06 101 s, 0.1 95 s, 0.15 101 s, 0.25 114 s.
   static constexpr double kSkin = 0.12;
-  // Every triangle's frame at x (edges by the minimum image: a shell may straddle the box).
-  void build_frames(const double* x) const;
-  mutable std::vector<TriangleFrame> frames_;
+  static constexpr int kStraddles = 27;  // image code of a candidate whose corners lie in different images
   mutable std::vector<int> candidate_start_, candidates_;
-  // Per candidate: the image of its corner a seen from the vertex, in box sides per axis.
-  mutable std::vector<std::array<std::int8_t, 3>> candidate_images_;
+  mutable std::vector<std::uint8_t> candidate_images_;  // per candidate: its periodic image seen from the vertex
   mutable std::vector<double> reference_;
   mutable double tolerated_move_ = 0;
   mutable bool list_valid_ = false;
@@ -176,45 +156,6 @@ inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const 
   const double s = va + vb + vc;
   if (!(s > 0)) return {1, 0, 0};  // degenerate (zero area) and not caught above
   const double v = vb / s, w = vc / s;
-  return {1 - v - w, v, w};
-}
-
-inline TriangleFrame triangle_frame(const double ab[3], const double ac[3]) {
-  TriangleFrame t;
-  for (int k = 0; k < 3; ++k) t.ab[k] = ab[k], t.ac[k] = ac[k];
-  t.g11 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-  t.g12 = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
-  t.g22 = ac[0] * ac[0] + ac[1] * ac[1] + ac[2] * ac[2];
-  t.det = t.g11 * t.g22 - t.g12 * t.g12;
-  return t;
-}
-
-inline Eigen::Vector3d closest_weights_in_frame(const TriangleFrame& t, const double a_minus_p[3]) {
-  const double* m = a_minus_p;
-  const double d1 = -(t.ab[0] * m[0] + t.ab[1] * m[1] + t.ab[2] * m[2]);  // ab.(p - a)
-  const double d2 = -(t.ac[0] * m[0] + t.ac[1] * m[1] + t.ac[2] * m[2]);  // ac.(p - a)
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const double d3 = d1 - t.g11, d4 = d2 - t.g12;  // ab.(p - b), ac.(p - b)
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = t.g11 * d2 - t.g12 * d1;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const double d5 = d1 - t.g12, d6 = d2 - t.g22;  // ab.(p - c), ac.(p - c)
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = t.g22 * d1 - t.g12 * d2;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const double va = t.det - vb - vc;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  if (!(t.det > 0)) return {1, 0, 0};  // degenerate (zero area) and not caught above
-  const double v = vb / t.det, w = vc / t.det;
   return {1 - v - w, v, w};
 }
 

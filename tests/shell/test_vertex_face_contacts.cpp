@@ -18,7 +18,6 @@
 
 #include <array>
 #include <cmath>
-#include <random>
 #include <vector>
 
 using namespace cmp::shell;
@@ -116,35 +115,6 @@ TEST_CASE("closest point of a triangle: interior, edge and corner regions", "[sh
   CHECK(near(closest_triangle_weights({1.3, -0.1, 0.0}, a, b, c), {0, 1, 0}));         // corner b
   CHECK(near(closest_triangle_weights({-0.1, 1.5, 2.0}, a, b, c), {0, 0, 1}));         // corner c
   CHECK(near(closest_triangle_weights({0.3, 0.3, 0.0}, a, b, c), {0.4, 0.3, 0.3}));    // in the plane
-}
-
-TEST_CASE("closest point of a triangle: the frame form gives the corner form's weights", "[shell][faces]") {
-  // Random triangles (some needle-thin, some nearly flat) and points all round them, 0.1 to 3
-  // edge lengths away: the weights of closest_weights_in_frame (edges and Gram matrix made once
-  // per triangle) against closest_triangle_weights (the corner form).
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const auto random_vector = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
-  double worst = 0;
-  int regions[3] = {0, 0, 0};  // closest point at a corner, on an edge, inside
-  for (int trial = 0; trial < 20000; ++trial) {
-    const Vector3d a = random_vector(), b = a + random_vector();
-    Vector3d c = a + random_vector();
-    if (trial % 4 == 1) c = a + 1e-3 * (c - a) + 0.9 * (b - a);  // a needle
-    if (trial % 4 == 2) c = 0.5 * (a + b) + 1e-6 * random_vector();  // nearly a segment
-    const Vector3d p = a + (0.1 + 3.0 * std::abs(u(rng))) * random_vector();
-    const Vector3d ab = b - a, ac = c - a, m = a - p;
-    const TriangleFrame t = triangle_frame(ab.data(), ac.data());
-    const Vector3d w = closest_weights_in_frame(t, m.data()), want = closest_triangle_weights(p, a, b, c);
-    CHECK(std::abs(w.sum() - 1) < 1e-14);
-    CHECK(w.minCoeff() >= 0);
-    // Compare the closest points: weights are not unique on a degenerate triangle.
-    const double gap = ((w[0] * a + w[1] * b + w[2] * c) - (want[0] * a + want[1] * b + want[2] * c)).norm();
-    worst = std::max(worst, gap);
-    ++regions[(w.array() > 0).count() - 1];
-  }
-  CHECK(worst < 1e-12);
-  for (int r : regions) CHECK(r > 500);
 }
 
 TEST_CASE("hertz-faces: one vertex over a triangle's interior, edge and corner", "[shell][faces]") {
