@@ -283,7 +283,6 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     csv.meta("P0", io::format_number(o.turgor0));
     csv.meta("box_step", io::format_number(o.step));
     csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
-    csv.meta("volume_rule", o.relax.adaptive_volume_gain ? "adaptive" : "thesis");
     csv.meta("seed", std::to_string(job.seed));
     csv.meta("shells", std::to_string(n_shells));
     csv.meta("vertices_per_shell", std::to_string(run.packing().shell_vertex_counts.front()));

@@ -4,9 +4,6 @@
 #include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
 #include "shell/element_assembly.hpp"
-#include "shell/volume_rule.hpp"
-
-#include <optional>
 
 #include <cmath>
 
@@ -73,16 +70,8 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
 
 namespace {
 
-void update_volumes(TurgorPressure& pressure, VolumeRule* rule, const Eigen::VectorXd& x) {
-  if (rule)
-    rule->update(pressure, span_of(x));
-  else
-    pressure.update_turgor_towards_targets(span_of(x));
-}
-
 // One FIRE run on s.x; adds to r. With a constant-volume pressure, Pi moves inside it (relax.hpp).
-void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress,
-               VolumeRule* rule) {
+void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress) {
   minimise::FireParameters fp = p.fire;
   fp.force_tolerance = p.relative_tolerance * p.force_scale;
   fp.mass = mass;
@@ -100,7 +89,7 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
       if (max_force > fp.force_tolerance && it - last_check < p.volume_update_interval) return false;
       last_check = it;
       if (!(pressure->volume_error(span_of(s.x)) > p.volume_tolerance)) return false;
-      update_volumes(*pressure, rule, s.x);
+      pressure->update_turgor_towards_targets(span_of(s.x));
       ++r.volume_updates;
       return true;
     };
@@ -126,11 +115,8 @@ RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress&
   const double lambda = stiffest_mode(s, s.x);
   const double mass = p.mass_factor * std::max(lambda, 1e-300) * (p.fire.dt_max * p.fire.dt_max / 2.25);
   RelaxResult r;
+  fire_once(s, p, mass, r, progress);
   TurgorPressure* pressure = s.pressure();
-  std::optional<VolumeRule> rule;
-  if (pressure && p.adaptive_volume_gain) rule.emplace(pressure->shell_count());
-  VolumeRule* rp = rule ? &*rule : nullptr;
-  fire_once(s, p, mass, r, progress, rp);
   if (!pressure || pressure->control() != PressureControl::ConstantVolume || !r.converged()) return r;
   r.volume_error = pressure->volume_error(span_of(s.x));
   // FIRE converged with a volume off only when the updates ran out: the thesis's loop.
@@ -139,9 +125,9 @@ RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress&
       r.stop = RelaxStop::VolumeUpdates;
       return r;
     }
-    update_volumes(*pressure, rp, s.x);
+    pressure->update_turgor_towards_targets(span_of(s.x));
     ++r.volume_updates;
-    fire_once(s, p, mass, r, progress, rp);
+    fire_once(s, p, mass, r, progress);
     if (!r.converged()) return r;
     r.volume_error = pressure->volume_error(span_of(s.x));
   }

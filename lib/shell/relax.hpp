@@ -11,8 +11,7 @@
 //
 // Constant volume (TurgorPressure with PressureControl::ConstantVolume, 5.2.1): relax, and
 // while some shell is off its target volume by more than 0.1 %, update its Pi by
-// Pi <- Pi (1 + (V0 - V)/V) and relax again (by default with a gain per shell that grows while
-// the updates fall short: volume_rule.hpp). The same fixed point is reached with far fewer
+// Pi <- Pi (1 + (V0 - V)/V) and relax again. The same fixed point is reached with far fewer
 // iterations when Pi moves while x relaxes: once FIRE's residual is below
 // volume_update_factor times the force tolerance (x near equilibrium for the current Pi, so
 // V answers to it), the volumes are checked every volume_update_interval iterations and at
@@ -40,7 +39,6 @@ struct RelaxParameters {
   int max_volume_updates = 500;      // constant volume: Pi updates before giving up
   double volume_update_factor = 100; // constant volume: Pi moves inside FIRE once max|f_i| <= this * the tolerance
   int volume_update_interval = 20;   // ... checked every this many FIRE iterations (and at convergence)
-  bool adaptive_volume_gain = true;  // constant volume: per-shell gains (volume_rule.hpp); false: the thesis's rule
   // Throws cmp::UsageError naming the first bad field.
   void validate() const;
 };

@@ -3,14 +3,12 @@
 #include "shell/observables.hpp"
 #include "shell/relax.hpp"
 #include "shell/shell_model.hpp"
-#include "shell/volume_rule.hpp"
 
 #include "elasticity/pressurised_sphere.hpp"
 #include "shell_fixtures.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -88,70 +86,6 @@ TEST_CASE("constant volume: Pi moving inside FIRE reaches the fixed point of who
   CHECK(inside.iterations < whole.iterations);
   // Both within the 0.1 % volume band, where Pi moves about 3 % per 0.1 % of volume.
   CHECK(pi_inside == Approx(pi_whole).epsilon(0.03));
-}
-
-TEST_CASE("volume rule: the gain grows while the error keeps its sign, halves when it flips, and Pi moves at most "
-          "a fifth per update",
-          "[shell][system][volume]") {
-  const auto rest = sphere(2);
-  ShellSystem s = make_shell_system(rest, membrane("volume", 0.01));
-  auto* p = s.pressure();
-  const double v = p->volumes(span_of(s.x)).front();
-  VolumeRule rule(1);
-  // x held fixed: the volume never answers, so every update falls short.
-  p->set_target_volumes({1.001 * v});
-  double pi = p->turgor();
-  const double error = (1.001 * v - v) / v;
-  double gain = 1;
-  for (int k = 0; k < 14; ++k) {
-    rule.update(*p, span_of(s.x));
-    if (k > 0) gain = std::min(gain * VolumeRule::kGrowth, VolumeRule::kLargestGain);
-    CHECK(rule.gains().front() == Approx(gain));
-    const double step = std::min(gain * error, VolumeRule::kLargestStep);
-    CHECK(p->turgor() == Approx(pi * (1 + step)).epsilon(1e-12));
-    pi = p->turgor();
-  }
-  CHECK(rule.gains().front() == VolumeRule::kLargestGain);  // 1.5^13 > 64: capped
-  // The error changes sign: the gain halves, and not below 1.
-  p->set_target_volumes({0.999 * v});
-  rule.update(*p, span_of(s.x));
-  CHECK(rule.gains().front() == Approx(VolumeRule::kLargestGain / 2));
-  VolumeRule fresh(1);
-  for (int k = 0; k < 3; ++k) {
-    p->set_target_volumes({(k % 2 ? 0.999 : 1.001) * v});
-    fresh.update(*p, span_of(s.x));
-    CHECK(fresh.gains().front() == 1.0);
-  }
-}
-
-TEST_CASE("constant volume: the adaptive rule reaches the thesis rule's Pi in fewer updates and iterations",
-          "[shell][system][volume]") {
-  // A free sphere at small strain (eps = 0.3 %): d ln V / d ln Pi = 3 eps, about 0.01, so the
-  // thesis's rule (g = 1) closes about a hundredth of the gap in Pi per update.
-  const auto rest = sphere();
-  const auto run = [&](bool adaptive) {
-    ShellSystem s = make_shell_system(rest, membrane("volume", 0.01));
-    auto* p = s.pressure();
-    p->set_target_volumes({1.02 * p->volumes(span_of(s.x)).front()});
-    auto rp = relax_parameters(rest);
-    rp.adaptive_volume_gain = adaptive;
-    const auto r = relax(s, rp);
-    return std::make_pair(r, p->turgor());
-  };
-  const auto [thesis, pi_thesis] = run(false);
-  const auto [adaptive, pi_adaptive] = run(true);
-  INFO("thesis rule: " << thesis.iterations << " iterations, " << thesis.volume_updates << " updates; adaptive: "
-                       << adaptive.iterations << ", " << adaptive.volume_updates);
-  for (const auto& r : {thesis, adaptive}) {
-    CHECK(r.converged());
-    CHECK(r.volume_error <= 1e-3);
-    CHECK(r.residual <= 1e-9);
-  }
-  CHECK(adaptive.volume_updates * 3 < thesis.volume_updates);
-  CHECK(adaptive.iterations * 2 < thesis.iterations);
-  // Both volumes lie in the 0.1 % band; there d ln V / d ln Pi is about 0.02, so the band spans
-  // about 10 % of Pi (the thesis's rule stops at its near edge, coming from below).
-  CHECK(pi_adaptive == Approx(pi_thesis).epsilon(0.1));
 }
 
 TEST_CASE("Heun's over-damped dynamics reaches FIRE's equilibrium", "[shell][system][heun]") {

@@ -184,22 +184,6 @@ case_bad_targets() {
   expect_error 2 "--phi: target 0.2 is below the starting volume fraction" compress --phi 0.2,0.5 -o 'out_{phi}.off'
   expect_error 2 "-o: must contain {phi}" compress --phi 0.5,0.6 -o out.off
 }
-case_volume_rule() {
-  # The adaptive gains (default) and the thesis's g = 1 reach the same band, each named in the
-  # table; the thesis's rule takes more updates.
-  make_start
-  compress --phi 0.6 >adaptive.csv || fail "compress (adaptive)"
-  compress --phi 0.6 --volume-rule thesis >thesis.csv || fail "compress --volume-rule thesis"
-  grep -qx "# volume_rule=adaptive" adaptive.csv || fail "no volume_rule=adaptive line"
-  grep -qx "# volume_rule=thesis" thesis.csv || fail "no volume_rule=thesis line"
-  for f in adaptive.csv thesis.csv; do
-    col $f volume_error | awk '$1 > 1e-3 { exit 1 }' || fail "$f: volume not held"
-  done
-  a=$(col adaptive.csv volume_updates | awk '{ s += $1 } END { print s }')
-  t=$(col thesis.csv volume_updates | awk '{ s += $1 } END { print s }')
-  [ "$a" -lt "$t" ] || fail "adaptive updates $a, thesis $t"
-  expect_error 2 "--volume-rule: .*secant" compress --phi 0.6 --volume-rule secant
-}
 case_bad_contact() {
   make_start
   expect_error 2 "--contact: must be hertz-faces .* got 'hertz-walls'" compress --phi 0.7 --contact hertz-walls

@@ -1,5 +1,4 @@
 #include "compress_command.hpp"
-#include "volume_rule_option.hpp"
 
 #include "shell/styles.hpp"
 
@@ -141,7 +140,6 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
                   "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
   tool.add_long(*cp, "--fire-max-iterations", job.run.relax.fire.max_iterations,
                 "FIRE iteration cap per relaxation (exit 1 when reached)", cli::at_least(1));
-  add_volume_rule_option(*cp, job.run.relax);
   tool.add_int(*cp, "--max-volume-updates", job.run.relax.max_volume_updates,
                "Pi updates of the constant-volume loop per step before giving up (exit 1)", cli::at_least(1));
   cp->add_option("--checkpoint", job.checkpoint, "save the run here every --checkpoint-every seconds and at the end");

@@ -21,7 +21,6 @@
 
 #include "analyze_command.hpp"
 #include "compress_command.hpp"
-#include "volume_rule_option.hpp"
 
 #include <fmt/format.h>
 
@@ -202,7 +201,6 @@ int main(int argc, char** argv) {
                     "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
     tool.add_long(*sh, "--fire-max-iterations", run.relax.fire.max_iterations, "FIRE iteration cap per relaxation",
                   cli::at_least(1));
-    shellpack::add_volume_rule_option(*sh, run.relax);
     sh->add_option("-o,--output", o.shell.mesh_output, "write the relaxed mesh to this OFF ('-': stdout)");
     sh->add_option("--csv", o.shell.csv, "the table of load steps ('-': stdout)")->default_str("-");
     tool.add_common(*sh, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
