@@ -257,19 +257,60 @@ double VertexFaceContacts::energy(std::span<const double> x) const {
 void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   collect(x);
-  double* G = g.data();
-  for (const auto& chunk : records_)
-    for (const Record& r : chunk) {
-      if (!(r.r > 0)) continue;  // p on the triangle: no direction (a set of measure zero)
-      // dU/dp = -U'(h) d/r; each corner k takes -w_k dU/dp.
-      const double s = -hertz_force(delta_ - r.r, estar_, rstar_) / r.r;
+  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
+  const int chunks = static_cast<int>(records_.size());
+  // A record adds -U'(h) d/r to its vertex and takes w_k of that from each corner of its
+  // triangle, which may lie in any chunk. Pass 1, per chunk of records: the factor of each
+  // record and, per target chunk, the records that write there, in record order. Pass 2, per
+  // target chunk: the records that write there, source chunk by source chunk. Every entry of g
+  // gets its terms in the one order of a serial pass over all records: the same bits on any
+  // thread count, and no two threads write one entry.
+  const auto chunk_of = [&](int v) {
+    int c = static_cast<int>(static_cast<long>(v) * chunks / std::max<Eigen::Index>(n, 1));
+    while (c + 1 < chunks && chunk_begin(n, chunks, c + 1) <= v) ++c;
+    while (c > 0 && chunk_begin(n, chunks, c) > v) --c;
+    return c;
+  };
+  factors_.resize(static_cast<std::size_t>(chunks));
+  writers_.resize(static_cast<std::size_t>(chunks));
+  for_each_chunk(chunks, parallel(), [&](int c) {
+    const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
+    std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
+    std::vector<std::vector<int>>& to = writers_[static_cast<std::size_t>(c)];
+    factor.resize(in.size());
+    to.resize(static_cast<std::size_t>(chunks));
+    for (auto& list : to) list.clear();
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      const Record& r = in[k];
+      // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
+      factor[k] = r.r > 0 ? -hertz_force(delta_ - r.r, estar_, rstar_) / r.r : 0.0;
+      if (factor[k] == 0) continue;
       const int* corner = faces_.data() + 3 * r.face;
-      for (int a = 0; a < 3; ++a) {
-        const double gp = s * r.d[a];
-        G[3 * r.i + a] += gp;
-        for (int k = 0; k < 3; ++k) G[3 * corner[k] + a] -= r.w[k] * gp;
+      int seen[4] = {chunk_of(r.i), chunk_of(corner[0]), chunk_of(corner[1]), chunk_of(corner[2])};
+      for (int a = 0; a < 4; ++a)
+        if (std::find(seen, seen + a, seen[a]) == seen + a) to[static_cast<std::size_t>(seen[a])].push_back(static_cast<int>(k));
+    }
+  });
+  double* G = g.data();
+  for_each_chunk(chunks, parallel(), [&](int t) {
+    const Eigen::Index lo = chunk_begin(n, chunks, t), hi = chunk_begin(n, chunks, t + 1);
+    for (int c = 0; c < chunks; ++c) {
+      const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
+      const std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
+      for (int k : writers_[static_cast<std::size_t>(c)][static_cast<std::size_t>(t)]) {
+        const Record& r = in[static_cast<std::size_t>(k)];
+        const double s = factor[static_cast<std::size_t>(k)];
+        const int* corner = faces_.data() + 3 * r.face;
+        const bool mine = r.i >= lo && r.i < hi;
+        for (int a = 0; a < 3; ++a) {
+          const double gp = s * r.d[a];
+          if (mine) G[3 * r.i + a] += gp;
+          for (int m = 0; m < 3; ++m)
+            if (corner[m] >= lo && corner[m] < hi) G[3 * corner[m] + a] -= r.w[m] * gp;
+        }
       }
     }
+  });
 }
 
 std::vector<ShellContactTerm::Touch> VertexFaceContacts::touches(std::span<const double> x) const {

@@ -35,8 +35,8 @@
 // the vertices' bounding box, or, once set_box() gave one, [0, L) with the minimum image along
 // its periodic axes: the interface of ShellContactTerm, as VertexContacts, so a packing run can
 // take either style. Vertices are handled in fixed chunks on all threads; energies are summed
-// per chunk in chunk order and the forces added on one thread in chunk order: the same bits
-// for any thread count.
+// per chunk in chunk order, and the forces scattered per chunk of vertices, each entry taking
+// its terms in record order: the same bits for any thread count.
 #include "shell/energy_term.hpp"
 #include "shell/hertz_contacts.hpp"
 #include "shell/shell_parameters.hpp"
@@ -125,6 +125,10 @@ class VertexFaceContacts final : public ShellContactTerm {
   mutable std::vector<int> pairs_;     // vertex pairs (i, j): j's triangles are i's candidates
   mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
   mutable std::vector<std::vector<Record>> records_;
+  // add_gradient's scatter, per chunk of records: each record's factor -U'(h)/r, and per target
+  // chunk the records (ascending) that write to it.
+  mutable std::vector<std::vector<double>> factors_;
+  mutable std::vector<std::vector<std::vector<int>>> writers_;
 };
 
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
