@@ -283,6 +283,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     csv.meta("P0", io::format_number(o.turgor0));
     csv.meta("box_step", io::format_number(o.step));
     csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
+    csv.meta("volume_rule", shell::volume_rule_name(o.relax.volume_rule));
     csv.meta("seed", std::to_string(job.seed));
     csv.meta("shells", std::to_string(n_shells));
     csv.meta("vertices_per_shell", std::to_string(run.packing().shell_vertex_counts.front()));

@@ -4,6 +4,7 @@
 #include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
 #include "shell/element_assembly.hpp"
+#include "shell/volume_rule.hpp"
 
 #include <cmath>
 
@@ -71,7 +72,8 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
 namespace {
 
 // One FIRE run on s.x; adds to r. With a constant-volume pressure, Pi moves inside it (relax.hpp).
-void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress) {
+void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResult& r, const RelaxProgress& progress,
+               VolumeRule& rule) {
   minimise::FireParameters fp = p.fire;
   fp.force_tolerance = p.relative_tolerance * p.force_scale;
   fp.mass = mass;
@@ -89,7 +91,7 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
       if (max_force > fp.force_tolerance && it - last_check < p.volume_update_interval) return false;
       last_check = it;
       if (!(pressure->volume_error(span_of(s.x)) > p.volume_tolerance)) return false;
-      pressure->update_turgor_towards_targets(span_of(s.x));
+      rule.update(*pressure, span_of(s.x));
       ++r.volume_updates;
       return true;
     };
@@ -115,7 +117,8 @@ RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress&
   const double lambda = stiffest_mode(s, s.x);
   const double mass = p.mass_factor * std::max(lambda, 1e-300) * (p.fire.dt_max * p.fire.dt_max / 2.25);
   RelaxResult r;
-  fire_once(s, p, mass, r, progress);
+  VolumeRule rule(p.volume_rule);
+  fire_once(s, p, mass, r, progress, rule);
   TurgorPressure* pressure = s.pressure();
   if (!pressure || pressure->control() != PressureControl::ConstantVolume || !r.converged()) return r;
   r.volume_error = pressure->volume_error(span_of(s.x));
@@ -125,9 +128,9 @@ RelaxResult relax(ShellSystem& s, const RelaxParameters& p, const RelaxProgress&
       r.stop = RelaxStop::VolumeUpdates;
       return r;
     }
-    pressure->update_turgor_towards_targets(span_of(s.x));
+    rule.update(*pressure, span_of(s.x));
     ++r.volume_updates;
-    fire_once(s, p, mass, r, progress);
+    fire_once(s, p, mass, r, progress, rule);
     if (!r.converged()) return r;
     r.volume_error = pressure->volume_error(span_of(s.x));
   }

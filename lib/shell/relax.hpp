@@ -22,6 +22,7 @@
 // Dynamics: Heun's method (explicit trapezoid, the thesis's integrator for B.5) of
 // mu dx/dt = F(x), mu the damping coefficient (the thesis fixes mu = 1).
 #include "shell/shell_system.hpp"
+#include "shell/volume_rule.hpp"
 
 #include "minimise/fire.hpp"
 
@@ -39,6 +40,7 @@ struct RelaxParameters {
   int max_volume_updates = 500;      // constant volume: Pi updates before giving up
   double volume_update_factor = 100; // constant volume: Pi moves inside FIRE once max|f_i| <= this * the tolerance
   int volume_update_interval = 20;   // ... checked every this many FIRE iterations (and at convergence)
+  VolumeRuleKind volume_rule = VolumeRuleKind::Accelerated;  // constant volume: how Pi moves (volume_rule.hpp)
   // Throws cmp::UsageError naming the first bad field.
   void validate() const;
 };

@@ -136,6 +136,7 @@ void write_shell_table(std::ostream& out, const ShellRunResult& r, const ShellRu
                     "a the mean rest edge length");
   write_model_meta(csv, m, "t");
   csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
+  csv.meta("volume_rule", volume_rule_name(o.relax.volume_rule));
   std::vector<std::string> header{"step",         "stage",          "pressure_P",    "turgor_P",     "gap_u",
                                   "volume_u3",    "area_u2",        "gyration1_u2",  "gyration2_u2", "gyration3_u2",
                                   "asphericity_u2", "wall_force_F", "wall_contact_area_u2", "shell_contact_area_u2",

@@ -22,7 +22,7 @@ bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0
 case_help() {
   "$shellpack" compress --help >help.txt || fail "--help"
   for opt in --mesh --phi -o --csv --step --P0 -E --nu -t --model --bending --pressure-model --contact --contact-distance --vertex-radius --ftol \
-    --fire-max-iterations --checkpoint --checkpoint-every --resume --timings --seed --threads; do
+    --fire-max-iterations --volume-rule --checkpoint --checkpoint-every --resume --timings --seed --threads; do
     grep -q -- "$opt" help.txt || fail "--help lacks $opt"
   done
 }
@@ -183,6 +183,23 @@ case_bad_targets() {
   expect_error 2 "--phi: target 1.2 must lie in" compress --phi 0.5,1.2 -o 'out_{phi}.off'
   expect_error 2 "--phi: target 0.2 is below the starting volume fraction" compress --phi 0.2,0.5 -o 'out_{phi}.off'
   expect_error 2 "-o: must contain {phi}" compress --phi 0.5,0.6 -o out.off
+}
+case_volume_rule() {
+  # The accelerated rule (default) and the thesis's reach the same band, each named in the
+  # table; towards phi 0.7 the thesis's rule takes more Pi updates.
+  make_start
+  compress --phi 0.7 >accelerated.csv || fail "compress (accelerated)"
+  compress --phi 0.7 --volume-rule thesis >thesis.csv || fail "compress --volume-rule thesis"
+  grep -qx "# volume_rule=accelerated" accelerated.csv || fail "no volume_rule=accelerated line"
+  grep -qx "# volume_rule=thesis" thesis.csv || fail "no volume_rule=thesis line"
+  for f in accelerated.csv thesis.csv; do
+    col $f volume_error | awk '$1 > 1e-3 { exit 1 }' || fail "$f: volume not held"
+  done
+  a=$(col accelerated.csv volume_updates | awk '{ s += $1 } END { print s }')
+  t=$(col thesis.csv volume_updates | awk '{ s += $1 } END { print s }')
+  [ "$a" -lt "$t" ] || fail "accelerated updates $a, thesis $t"
+  echo "Pi updates: accelerated $a, thesis $t"
+  expect_error 2 "--volume-rule: must be accelerated or thesis, got 'secant'" compress --phi 0.6 --volume-rule secant
 }
 case_bad_contact() {
   make_start

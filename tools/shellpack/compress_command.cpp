@@ -53,6 +53,7 @@ void CompressCommand::check(cli::Tool& tool, const cli::CommonOptions& common, c
   tool.collect("--model", [&] { shell::stretching_style(m.stretching); });
   if (m.bending == "none") m.bending.clear();
   if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
+  volume_rule.apply(tool, job.run.relax);
   tool.check(m.pressure == "volume" || m.pressure == "turgor", "--pressure-model",
              "must be volume (constant volume) or turgor (constant Pi), got '" + m.pressure + "'");
   tool.check(m.shell_contact_style == "hertz-faces" || m.shell_contact_style == "hertz-vertices", "--contact",
@@ -140,6 +141,7 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
                   "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
   tool.add_long(*cp, "--fire-max-iterations", job.run.relax.fire.max_iterations,
                 "FIRE iteration cap per relaxation (exit 1 when reached)", cli::at_least(1));
+  volume_rule.add(*cp);
   tool.add_int(*cp, "--max-volume-updates", job.run.relax.max_volume_updates,
                "Pi updates of the constant-volume loop per step before giving up (exit 1)", cli::at_least(1));
   cp->add_option("--checkpoint", job.checkpoint, "save the run here every --checkpoint-every seconds and at the end");

@@ -4,6 +4,7 @@
 // shellpack lives in main.cpp).
 #include "cli/tool.hpp"
 #include "packrun/compress_job.hpp"
+#include "volume_rule_option.hpp"
 
 #include <limits>
 #include <string>
@@ -17,6 +18,7 @@ struct CompressCommand {
   double p0 = 0.0025;     // --P0 [E]
   double wall_modulus = std::numeric_limits<double>::infinity();  // --wall-modulus [E]
   bool no_penetration_check = false;
+  VolumeRuleOption volume_rule;
 
   // Adds the subcommand and its options to `parent`; `common` takes --seed, --threads, -q.
   CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);

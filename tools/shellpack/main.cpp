@@ -21,6 +21,7 @@
 
 #include "analyze_command.hpp"
 #include "compress_command.hpp"
+#include "volume_rule_option.hpp"
 
 #include <fmt/format.h>
 
@@ -43,6 +44,7 @@ struct Options {
   packrun::ShellJob shell;
   double vertex_radius = 0, wall_gap = 0;
   bool list_models = false;
+  shellpack::VolumeRuleOption volume_rule;
   // bench-mechanics
   std::string bench_case, bench_output = "-";
   bool bench_full = false, bench_analytic = false;
@@ -87,6 +89,7 @@ void check_shell(cli::Tool& tool, Options& o) {
   if (m.bending == "none") m.bending.clear();
   if (!m.bending.empty()) tool.collect("--bending", [&] { shell::bending_style(m.bending); });
   tool.collect("--pressure-model", [&] { shell::pressure_style(m.pressure); });
+  o.volume_rule.apply(tool, job.run.relax);
   m.contact.vertex_radius = o.vertex_radius > 0 ? o.vertex_radius : m.material.thickness;
   m.contact.youngs_modulus = m.material.youngs_modulus;
   m.contact.poisson_ratio = m.material.poisson_ratio;
@@ -201,6 +204,7 @@ int main(int argc, char** argv) {
                     "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
     tool.add_long(*sh, "--fire-max-iterations", run.relax.fire.max_iterations, "FIRE iteration cap per relaxation",
                   cli::at_least(1));
+    o.volume_rule.add(*sh);
     sh->add_option("-o,--output", o.shell.mesh_output, "write the relaxed mesh to this OFF ('-': stdout)");
     sh->add_option("--csv", o.shell.csv, "the table of load steps ('-': stdout)")->default_str("-");
     tool.add_common(*sh, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
