@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <utility>
 
 using namespace cmp::shell;
@@ -36,6 +37,19 @@ ShellModel membrane(const std::string& pressure, double pi) {
   m.pressure = pressure;
   m.load.turgor = pi;
   return m;
+}
+
+// A free sphere at Pi = 0.01 held at `swell` times its rest volume, relaxed with the default
+// parameters as `adjust` changes them: the result and the final Pi.
+std::pair<RelaxResult, double> relax_to_volume(const cmp::mesh::TriMesh& rest, double swell,
+                                               const std::function<void(RelaxParameters&)>& adjust) {
+  ShellSystem s = make_shell_system(rest, membrane("volume", 0.01));
+  auto* p = s.pressure();
+  p->set_target_volumes({swell * p->volumes(span_of(s.x)).front()});
+  auto rp = relax_parameters(rest);
+  adjust(rp);
+  const auto r = relax(s, rp);
+  return {r, p->turgor()};
 }
 
 }  // namespace
@@ -65,13 +79,8 @@ TEST_CASE("constant volume: Pi moving inside FIRE reaches the fixed point of who
           "[shell][system][volume]") {
   const auto rest = sphere();
   const auto run = [&](double update_factor) {
-    ShellSystem s = make_shell_system(rest, membrane("volume", 0.01));
-    auto* p = s.pressure();
-    p->set_target_volumes({1.05 * p->volumes(span_of(s.x)).front()});
-    auto rp = relax_parameters(rest);
-    rp.volume_update_factor = update_factor;  // 1: Pi moves only at convergence, as in the thesis's loop
-    const auto r = relax(s, rp);
-    return std::make_pair(r, p->turgor());
+    // 1: Pi moves only at convergence, as in the thesis's loop
+    return relax_to_volume(rest, 1.05, [&](RelaxParameters& rp) { rp.volume_update_factor = update_factor; });
   };
   const auto [whole, pi_whole] = run(1.0);
   const auto [inside, pi_inside] = run(100.0);
@@ -94,13 +103,7 @@ TEST_CASE("constant volume: the accelerated rule reaches the thesis rule's band 
   // about a hundredth of the gap in Pi per update.
   const auto rest = sphere();
   const auto run = [&](VolumeRuleKind kind) {
-    ShellSystem s = make_shell_system(rest, membrane("volume", 0.01));
-    auto* p = s.pressure();
-    p->set_target_volumes({1.02 * p->volumes(span_of(s.x)).front()});
-    auto rp = relax_parameters(rest);
-    rp.volume_rule = kind;
-    const auto r = relax(s, rp);
-    return std::make_pair(r, p->turgor());
+    return relax_to_volume(rest, 1.02, [&](RelaxParameters& rp) { rp.volume_rule = kind; });
   };
   const auto [thesis, pi_thesis] = run(VolumeRuleKind::Thesis);
   const auto [accelerated, pi_accelerated] = run(VolumeRuleKind::Accelerated);
