@@ -148,9 +148,5 @@ double TurgorPressure::volume_error(std::span<const double> x) const {
   return worst;
 }
 
-void TurgorPressure::update_turgor_towards_targets(std::span<const double> x) {
-  const auto v = volumes(x);
-  for (std::size_t s = 0; s < v.size(); ++s) turgor_[s] *= 1.0 + (target_[s] - v[s]) / v[s];
-}
 
 }  // namespace cmp::shell

@@ -11,8 +11,8 @@
 // Two controls, two registered styles with the same energy:
 //   "turgor": Pi fixed (the load of the B.5 and B.7 benchmarks);
 //   "volume": a constant volume, an incompressible fill (5.2.1, B.6). During one relaxation
-//     Pi is fixed; between relaxations the driver (relax.hpp) applies
-//     Pi_s <- Pi_s (1 + (V0_s - V_s)/V_s) until every |V_s - V0_s| <= 0.1 % V0_s. The targets
+//     Pi is fixed; between relaxations the driver (relax.hpp) moves it by a volume rule
+//     (volume_rule.hpp) until every |V_s - V0_s| <= 0.1 % V0_s. The targets
 //     V0_s default to the rest volumes; a driver that inflates first sets them to the
 //     inflated ones. A shell at Pi = 0 stays at 0 under this rule (as in the thesis, which
 //     starts it from the inflated state).
@@ -59,8 +59,6 @@ class TurgorPressure final : public EnergyTerm {
   void set_target_volumes(const std::vector<double>& v0);
   // The largest relative volume error max_s |V_s - V0_s| / V0_s at x.
   double volume_error(std::span<const double> x) const;
-  // One step of the constant-volume rule on every shell (above), at x.
-  void update_turgor_towards_targets(std::span<const double> x);
 
  private:
   PressureControl control_;
