@@ -1,7 +1,6 @@
 #pragma once
 // `shellpack compress`: its options and their defaults (the thesis's Ch. 5 shells), the checks
-// of every option at once, and the run with the provenance a resumed run repeats (the rest of
-// shellpack lives in main.cpp).
+// of every option at once, and the run with the provenance a resumed run repeats.
 #include "cli/tool.hpp"
 #include "packrun/compress_job.hpp"
 #include "volume_rule_option.hpp"
