@@ -64,9 +64,10 @@ double ShellSystem::energy(const Eigen::VectorXd& y) const {
 }
 
 void ShellSystem::forces(const Eigen::VectorXd& y, Eigen::VectorXd& f) const {
-  gradient_.setZero(y.size());
-  for (const auto& t : terms_) t->add_gradient(span_of(y), span_of(gradient_));
-  f = -gradient_;
+  // The terms add their gradients into f itself, negated once at the end (no second vector).
+  f.setZero(y.size());
+  for (const auto& t : terms_) t->add_gradient(span_of(y), span_of(f));
+  f = -f;
   for (long v = 0; v < vertex_count(); ++v)
     if (fixed_[v]) f.segment<3>(3 * v).setZero();
 }

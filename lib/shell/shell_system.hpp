@@ -75,7 +75,6 @@ class ShellSystem {
   std::vector<char> fixed_;
   std::vector<int> hinge_quads_;
   std::vector<double> hinge_rest_;
-  mutable Eigen::VectorXd gradient_;
 };
 
 // The number of hinges folded over at y: the angle between the normals of two neighbouring
