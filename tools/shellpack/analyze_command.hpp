@@ -2,20 +2,20 @@
 // `shellpack analyze`: its options (the material and contact values that override a packing
 // file's own only when given), their checks and the run.
 #include "cli/tool.hpp"
+#include "command.hpp"
 #include "packrun/analyze_batch.hpp"
 
 #include <string>
 
 namespace cmp::shellpack {
 
-class AnalyzeCommand {
+class AnalyzeCommand final : public Command {
  public:
-  // Adds the subcommand and its options to `parent`; `common` takes --threads, -q.
-  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);
+  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) override;
   // Checks the options (problems collected in `tool`).
-  void check(cli::Tool& tool);
+  void check(cli::Tool& tool) override;
   // Applies the overrides given and runs the batch.
-  void run(bool quiet, const std::string& provenance);
+  void run(bool quiet, const std::string& provenance) override;
 
  private:
   packrun::AnalyzeBatch batch_;

@@ -19,11 +19,11 @@ CLI::App* BenchMechanicsCommand::add(cli::Tool& tool, CLI::App& parent, cli::Com
   return bench;
 }
 
-void BenchMechanicsCommand::check(cli::Tool& tool) const {
+void BenchMechanicsCommand::check(cli::Tool& tool) {
   tool.collect("case", [&] { shell::check_mechanics_benchmark(case_); });
 }
 
-void BenchMechanicsCommand::run(bool quiet, const std::string& provenance) const {
+void BenchMechanicsCommand::run(bool quiet, const std::string& provenance) {
   io::AtomicOutput out(output_);
   if (analytic_)
     elasticity::write_csv(out.stream(), elasticity::analytic_curve(case_));

@@ -34,7 +34,9 @@ std::vector<std::string> with_checkpoint_args(int argc, char** argv) {
   return out;
 }
 
-void CompressCommand::check(cli::Tool& tool, const cli::CommonOptions& common, const std::vector<std::string>& args) {
+void CompressCommand::check(cli::Tool& tool) {
+  const cli::CommonOptions& common = *common_;
+  const std::vector<std::string>& args = args_;
   auto& m = job.run.model;
   tool.check(!job.packing_path.empty(), "packing", "is required (a jammed sphere packing, or --resume)");
   tool.check(!job.mesh_path.empty(), "--mesh", "is required");
@@ -90,6 +92,7 @@ void CompressCommand::check(cli::Tool& tool, const cli::CommonOptions& common, c
 }
 
 CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) {
+  common_ = &common;
   auto& cm = job.run.model;
   cm.pressure = "volume";
   cm.material.youngs_modulus = 1.0;
@@ -156,7 +159,7 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
   return cp;
 }
 
-void CompressCommand::run() {
+void CompressCommand::run(bool, const std::string&) {
   // The run as the checkpoint records it (without --resume, --threads, ...): an interrupted
   // and resumed run then writes the same provenance, so the same bytes, as one never stopped.
   std::vector<std::string> run_args{"shellpack", "compress"};

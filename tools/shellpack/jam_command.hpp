@@ -3,19 +3,19 @@
 // of every option at once and the batch of packings.
 #include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
+#include "command.hpp"
 #include "packrun/jam_batch.hpp"
 
 #include <string>
 
 namespace cmp::shellpack {
 
-class JamCommand {
+class JamCommand final : public Command {
  public:
-  // Adds the subcommand and its options to `parent`; `common` takes --threads, -q.
-  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);
+  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) override;
   // Checks every option (problems collected in `tool`) and completes the batch.
-  void check(cli::Tool& tool);
-  void run(bool quiet, const std::string& provenance);
+  void check(cli::Tool& tool) override;
+  void run(bool quiet, const std::string& provenance) override;
 
  private:
   packrun::JamBatch batch_;

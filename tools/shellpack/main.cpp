@@ -19,6 +19,9 @@
 #include "shell_command.hpp"
 #include "structure_command.hpp"
 
+#include <array>
+#include <vector>
+
 using namespace cmp;
 
 int main(int argc, char** argv) {
@@ -29,40 +32,29 @@ int main(int argc, char** argv) {
     app->require_subcommand(1);
     tool.add_common(*app, common, cli::Tool::kQuiet);
 
+    // A resumed compression parses its checkpoint's arguments, then the ones typed.
+    const auto full_args = shellpack::with_checkpoint_args(argc, argv);
     shellpack::JamCommand jam;
     shellpack::StructureCommand structure;
     shellpack::ShellCommand shell;
     shellpack::AnalyzeCommand analyze;
     shellpack::BenchMechanicsCommand bench;
-    shellpack::CompressCommand compress;
-    auto* jam_app = jam.add(tool, *app, common);
-    auto* structure_app = structure.add(tool, *app, common);
-    auto* shell_app = shell.add(tool, *app, common);
-    auto* analyze_app = analyze.add(tool, *app, common);
-    auto* bench_app = bench.add(tool, *app, common);
-    auto* compress_app = compress.add(tool, *app, common);
+    shellpack::CompressCommand compress(full_args);
+    const std::array<shellpack::Command*, 6> commands{&jam, &structure, &shell, &analyze, &bench, &compress};
+    std::array<CLI::App*, 6> apps{};
+    for (std::size_t k = 0; k < commands.size(); ++k) apps[k] = commands[k]->add(tool, *app, common);
 
-    // A resumed compression parses its checkpoint's arguments, then the ones typed.
-    const auto full_args = shellpack::with_checkpoint_args(argc, argv);
     std::vector<char*> full_argv;
     for (const auto& a : full_args) full_argv.push_back(const_cast<char*>(a.c_str()));
     tool.parse(static_cast<int>(full_argv.size()), full_argv.data());
-    if (jam_app->parsed()) jam.check(tool);
-    if (structure_app->parsed()) structure.check(tool);
-    if (shell_app->parsed()) shell.check(tool);
-    if (analyze_app->parsed()) analyze.check(tool);
-    if (bench_app->parsed()) bench.check(tool);
-    if (compress_app->parsed()) compress.check(tool, common, full_args);
+    for (std::size_t k = 0; k < commands.size(); ++k)
+      if (apps[k]->parsed()) commands[k]->check(tool);
     tool.finish_checks();
     cli::apply_threads(common);
 
     const std::string provenance = cli::provenance("shellpack", argc, argv);
-    if (jam_app->parsed()) jam.run(common.quiet, provenance);
-    if (structure_app->parsed()) structure.run(common.quiet, provenance);
-    if (shell_app->parsed()) shell.run(common.quiet, provenance);
-    if (analyze_app->parsed()) analyze.run(common.quiet, provenance);
-    if (bench_app->parsed()) bench.run(common.quiet, provenance);
-    if (compress_app->parsed()) compress.run();  // its provenance is the checkpoint's run
+    for (std::size_t k = 0; k < commands.size(); ++k)
+      if (apps[k]->parsed()) commands[k]->run(common.quiet, provenance);
     return 0;
   });
 }

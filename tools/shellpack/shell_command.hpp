@@ -2,6 +2,7 @@
 // `shellpack shell`: one pressurised elastic shell, inflated and optionally squeezed between two
 // plates (App. B); its options, their checks and the run (or the list of registered models).
 #include "cli/tool.hpp"
+#include "command.hpp"
 #include "packrun/shell_job.hpp"
 #include "volume_rule_option.hpp"
 
@@ -9,14 +10,13 @@
 
 namespace cmp::shellpack {
 
-class ShellCommand {
+class ShellCommand final : public Command {
  public:
-  // Adds the subcommand and its options to `parent`; `common` takes --threads, -q.
-  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);
+  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) override;
   // Checks every option (problems collected in `tool`) and completes the job.
-  void check(cli::Tool& tool);
+  void check(cli::Tool& tool) override;
   // Runs the job, or writes the model list (--list-models) to stdout.
-  void run(bool quiet, const std::string& provenance);
+  void run(bool quiet, const std::string& provenance) override;
 
  private:
   packrun::ShellJob job_;

@@ -18,7 +18,7 @@ CLI::App* StructureCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOp
   return structure;
 }
 
-void StructureCommand::check(cli::Tool& tool) const {
+void StructureCommand::check(cli::Tool& tool) {
   const auto& b = batch_;
   tool.check(b.r_max > b.bin_width, "--rmax", "must exceed --bin");
   const int to_stdout = (b.output == "-") + (b.forces_output == "-") + (b.summary_output == "-");

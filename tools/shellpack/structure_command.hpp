@@ -2,19 +2,19 @@
 // `shellpack structure`: g(r), Z, rattlers and contact forces of sphere packings; its options,
 // their checks and the batch.
 #include "cli/tool.hpp"
+#include "command.hpp"
 #include "packrun/structure_batch.hpp"
 
 #include <string>
 
 namespace cmp::shellpack {
 
-class StructureCommand {
+class StructureCommand final : public Command {
  public:
-  // Adds the subcommand and its options to `parent`; `common` takes --threads, -q.
-  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common);
+  CLI::App* add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) override;
   // Checks the options (problems collected in `tool`).
-  void check(cli::Tool& tool) const;
-  void run(bool quiet, const std::string& provenance);
+  void check(cli::Tool& tool) override;
+  void run(bool quiet, const std::string& provenance) override;
 
  private:
   packrun::StructureBatch batch_;
