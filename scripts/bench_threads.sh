@@ -13,6 +13,7 @@ bin="$build/bin"
 "$bin/percolate" "$work/jam.xyz" --delta 0.04 -q -o "$work/cluster.vtk" --csv /dev/null
 "$bin/shellpack" jam -N 16 --seed 1 -q -o "$work/jam16.xyz" --csv /dev/null
 "$bin/rndmesh" icosa --level 4 --radius 0.5 -q -o "$work/ico4.off"
+"$bin/rndmesh" icosa --level 5 --radius 0.5 -q -o "$work/ico5.off"
 
 # name|what it runs|command ({T}: the thread count)
 cases=(
@@ -25,6 +26,7 @@ cases=(
   "jam2d_sweep|jam2d sweep --box 8 --seeds 1:4 (jamming, 4 colonies)|$bin/jam2d sweep --box 8 --seeds 1:4 --threads {T} -q > /dev/null"
   "shell_inflate_2562|shellpack shell: inflate a 2562-vertex shell (SVK + hinge-uniform + turgor) to equilibrium|OMP_NUM_THREADS={T} $bench/bench_shell inflate 5"
   "compress_faces_16x642|shellpack compress: 16 shells x 642 vertices, hertz-faces, the first 12 box steps|$bin/shellpack compress $work/jam16.xyz --mesh $work/ico4.off --contact hertz-faces --phi 0.9 --stop-after-steps 12 --threads {T} -q -o /dev/null --csv /dev/null"
+  "compress_faces_50x2562|shellpack compress: 50 shells x 2562 vertices, hertz-faces, the first 3 box steps (passes large enough to run on both threads)|$bin/shellpack compress $work/jam.xyz --mesh $work/ico5.off --contact hertz-faces --phi 0.9 --stop-after-steps 3 --threads {T} -q -o /dev/null --csv /dev/null"
   "compress_vertices_16x642|shellpack compress: 16 shells x 642 vertices, hertz-vertices, the first 12 box steps|$bin/shellpack compress $work/jam16.xyz --mesh $work/ico4.off --phi 0.9 --stop-after-steps 12 --threads {T} -q -o /dev/null --csv /dev/null"
   "kcfit_bootstrap|kcfit kc-percolation, 120 points, --bootstrap 1000|$bin/kcfit $work/kc.csv --model kc-percolation --loss log --bootstrap 1000 --threads {T} -o $work/fit.csv"
 )

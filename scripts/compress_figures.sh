@@ -18,6 +18,9 @@
 # 0.7, 0.8 and 0.9).
 # Every compression checkpoints; COMPRESS_RESUME=1 keeps finished runs and continues the ones
 # an interruption stopped (long runs: COMPRESS_LEVEL=5, the thesis's 2562 vertices per shell).
+# Last, why the turgor near confluence depends on the mesh: COMPRESS_LAYER_N (16; 0 skips it)
+# shells of 642 vertices with faces to phi = 0.95, as they are and with contacts four times
+# stiffer against the membrane (about 8 minutes; $out/compress/layer<N>/table.md).
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
@@ -120,4 +123,30 @@ if [ "$high_n" -gt 0 ]; then
   gnuplot -e "runs='$dir'; labels='N=$high_n'; packs='${packs# }'; packlabels='${packlabels# }'; packvar='{/Symbol f}'; out='$out/shell_compress_faces.png'" \
     "$src/scripts/plot_compress.gp"
   echo "make compress-figures: $out/shell_compress_faces.png" >&2
+fi
+
+# Why the turgor near confluence depends on the mesh: hertz-faces pushes each vertex with a
+# Hertz force of its own, so the layer's stiffness per area grows with the vertex density (4x
+# from 642 to 2,562 vertices per shell). COMPRESS_LAYER_N (16; 0 skips) shells of 642 vertices
+# from jamming to phi = 0.95 twice: as above, and with the membrane four times softer (t/4,
+# Pi_0 in E/4, the layer delta kept), i.e. contacts four times stiffer against the membrane,
+# as a 2,562-vertex mesh has them. $out/compress/layer<N>/table.md: <Pi>/Pi0 of both.
+layer_n=${COMPRESS_LAYER_N:-16}
+if [ "$layer_n" -gt 0 ]; then
+  dir="$out/compress/layer$layer_n"
+  echo "== contact layer stiffness: $layer_n shells of 642 vertices, hertz-faces, as they are and with 4x stiffer contacts" >&2
+  level=4 compress "$dir/as_is" "$layer_n" --contact hertz-faces --phi "0.6:0.95:0.05"
+  level=4 compress "$dir/stiff" "$layer_n" --contact hertz-faces --phi "0.6:0.95:0.05" \
+    -t 0.005 --contact-distance 0.02 --P0 0.000625
+  for run in as_is stiff; do "$bin/shellpack" analyze "$dir/$run"/pack_*.off -q >"$dir/$run/structure.csv"; done
+  awk -F, 'FNR == 1 { f++ } /^#/ { next }
+    !h[f] { for (i = 1; i <= NF; i++) c[$i] = i; h[f] = 1; next }
+    f == 1 { pi[$c["phi"]] = $c["turgor_mean_P0"]; z[$c["phi"]] = $c["Z"]; next }
+    { p = $c["phi"]; printf "| %s | %.2f | %.2f | %.2f | %.2f | %.2f |\n", p, z[p], $c["Z"], pi[p], $c["turgor_mean_P0"],
+        $c["turgor_mean_P0"] / pi[p] }' "$dir/as_is/structure.csv" "$dir/stiff/structure.csv" >"$dir/rows.md"
+  { echo "| phi | Z | Z, contacts x4 | <Pi>/Pi0 | <Pi>/Pi0, contacts x4 | ratio |"; echo "|---|---|---|---|---|---|"
+    cat "$dir/rows.md"; } >"$dir/table.md"
+  rm "$dir/rows.md"
+  cat "$dir/table.md"
+  echo "make compress-figures: $dir/table.md" >&2
 fi
