@@ -20,6 +20,12 @@
 
 namespace cmp::minimise {
 
+// From this many coordinates on, FIRE's vector passes are cut into kFireChunks fixed chunks
+// whose sums are added in order (on all threads from FireParameters::parallel_size): the same
+// path for any thread count.
+inline constexpr Eigen::Index kParallelFireSize = 3 * 2048;
+inline constexpr int kFireChunks = 4;
+
 struct FireParameters {
   double dt = 0.1;             // initial time step, dt_FIRE
   double dt_max = 1.5;         // largest time step, dt_FIRE^max
@@ -35,7 +41,7 @@ struct FireParameters {
   // From this many coordinates on, the vector passes run on all threads (below, the same
   // chunks in order on one: same bits). kParallelFireSize suits forces as cheap as spheres';
   // a caller whose own force passes stay on one thread up to a larger size passes that size.
-  long parallel_size = 3 * 2048;
+  long parallel_size = kParallelFireSize;
 
   // Throws cmp::UsageError naming the first bad field (non-positive steps, f_dec >= 1, ...).
   void validate() const;
@@ -70,12 +76,6 @@ using FireAdjust = std::function<bool(long iterations, double max_force)>;
 // O(size) vector work.
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& parameters,
                 const FireProgress& progress = {}, long progress_every = 1000, const FireAdjust& adjust = {});
-
-// From this many coordinates on, FIRE's vector passes are cut into kFireChunks fixed chunks
-// whose sums are added in order (on all threads from FireParameters::parallel_size): the same
-// path for any thread count.
-inline constexpr Eigen::Index kParallelFireSize = 3 * 2048;
-inline constexpr int kFireChunks = 4;
 
 // max_i |f_i| over consecutive blocks of block_size coordinates.
 double max_block_norm(const Eigen::VectorXd& f, int block_size);
