@@ -263,21 +263,25 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   double* G = g.data();
   // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
   const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(delta_ - r.r, estar_, rstar_) / r.r : 0.0; };
+  // Record r with factor s: s d on its vertex, -w_k s d on each corner of its triangle; only
+  // the entries of vertices in [lo, hi).
+  const auto add_terms = [&](const Record& r, double s, Eigen::Index lo, Eigen::Index hi) {
+    const int* corner = faces_.data() + 3 * r.face;
+    const bool mine = r.i >= lo && r.i < hi;
+    for (int a = 0; a < 3; ++a) {
+      const double gp = s * r.d[a];
+      if (mine) G[3 * r.i + a] += gp;
+      for (int m = 0; m < 3; ++m)
+        if (corner[m] >= lo && corner[m] < hi) G[3 * corner[m] + a] -= r.w[m] * gp;
+    }
+  };
   if (!parallel() || omp_get_max_threads() == 1) {
     // One thread: the records in order, straight into g. The two passes below cost more than
     // the scatter itself there (16 x 642 shells with faces to phi = 0.9, whose passes stay on
     // one thread: 118-120 s with them, 94-106 s without; the same packing).
     for (const std::vector<Record>& in : records_)
-      for (const Record& r : in) {
-        const double s = factor_of(r);
-        if (s == 0) continue;
-        const int* corner = faces_.data() + 3 * r.face;
-        for (int a = 0; a < 3; ++a) {
-          const double gp = s * r.d[a];
-          G[3 * r.i + a] += gp;
-          for (int m = 0; m < 3; ++m) G[3 * corner[m] + a] -= r.w[m] * gp;
-        }
-      }
+      for (const Record& r : in)
+        if (const double s = factor_of(r); s != 0) add_terms(r, s, 0, n);
     return;
   }
   // A record adds -U'(h) d/r to its vertex and takes w_k of that from each corner of its
@@ -316,18 +320,8 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
     for (int c = 0; c < chunks; ++c) {
       const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
       const std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
-      for (int k : writers_[static_cast<std::size_t>(c)][static_cast<std::size_t>(t)]) {
-        const Record& r = in[static_cast<std::size_t>(k)];
-        const double s = factor[static_cast<std::size_t>(k)];
-        const int* corner = faces_.data() + 3 * r.face;
-        const bool mine = r.i >= lo && r.i < hi;
-        for (int a = 0; a < 3; ++a) {
-          const double gp = s * r.d[a];
-          if (mine) G[3 * r.i + a] += gp;
-          for (int m = 0; m < 3; ++m)
-            if (corner[m] >= lo && corner[m] < hi) G[3 * corner[m] + a] -= r.w[m] * gp;
-        }
-      }
+      for (int k : writers_[static_cast<std::size_t>(c)][static_cast<std::size_t>(t)])
+        add_terms(in[static_cast<std::size_t>(k)], factor[static_cast<std::size_t>(k)], lo, hi);
     }
   });
 }
