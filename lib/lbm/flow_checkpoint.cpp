@@ -60,7 +60,7 @@ FlowObservables unpack(const double v[kObservableFields]) {
 std::uint64_t FlowSolver::Impl::fingerprint_of(const PoreLattice& lattice) const {
   const bool pressure = settings.driving == Driving::kPressure;
   Fnv h;
-  h.bytes("cmp-lbm-1", 9);
+  h.bytes("cmp-lbm-2", 9);  // 2: brick node order (lbm/layout.hpp); older checkpoints do not resume
   h.value(n);
   for (std::uint8_t v : lattice.fluid) h.value(static_cast<std::uint8_t>(v != 0));
   for (const WallLink& w : walls) {

@@ -21,10 +21,11 @@
 // interpolated bounce-back and the pressure nodes are fixed up after each sweep, link by
 // link and node by node, in a fixed order.
 //
-// Layout along the flow axis: fluid nodes are numbered slab by slab along the flow axis
-// (the axis coordinate is the slowest index), so a slab of planes is one contiguous node
-// range. Threads take fixed chunks of that range (dynamic hand-out, lib/core/fixed_chunks.hpp).
-// A later MPI split along the axis gives each rank a contiguous range of slabs; the links
+// Layout along the flow axis: fluid nodes are numbered brick by brick (lbm/layout.hpp: bricks
+// of 16 planes along the flow axis, a few rows wide across it, so that an odd step's neighbours
+// in the next plane are near in memory), and 16 planes are one contiguous node range. Threads
+// take fixed chunks of that range (dynamic hand-out, lib/core/fixed_chunks.hpp). A later MPI
+// split along the axis gives each rank a contiguous range of 16-plane slabs; the links
 // that leave a rank's range (the only ones to neighbouring planes) become halo slots
 // exchanged after each step, with no change to the kernel.
 //

@@ -16,21 +16,25 @@ std::vector<WallFraction> FlowSolver::Impl::build_link_table(const PoreLattice& 
   const int a = settings.axis;
   const bool pressure = settings.driving == Driving::kPressure;
 
-  // Number the fluid nodes slab by slab along the axis (axis coordinate slowest).
+  // Number the fluid nodes brick by brick: bricks of kBrickPlanes planes along the axis and
+  // brick_rows() rows across it, in each brick plane by plane and row by row (lbm/layout.hpp).
   const int b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;  // the other two axes, lower first (fastest)
+  const int rows = brick_rows(n[b]);
   std::vector<long> node_of(static_cast<std::size_t>(lattice.nodes()), -1);
-  for (int s = 0; s < n[a]; ++s)
-    for (int v = 0; v < n[c]; ++v)
-      for (int u = 0; u < n[b]; ++u) {
-        int xyz[3];
-        xyz[a] = s;
-        xyz[b] = u;
-        xyz[c] = v;
-        const long i = lattice.index(xyz[0], xyz[1], xyz[2]);
-        if (!lattice.fluid[static_cast<std::size_t>(i)]) continue;
-        node_of[static_cast<std::size_t>(i)] = static_cast<long>(site.size());
-        site.push_back(i);
-      }
+  for (int s0 = 0; s0 < n[a]; s0 += kBrickPlanes)
+    for (int v0 = 0; v0 < n[c]; v0 += rows)
+      for (int s = s0; s < std::min(n[a], s0 + kBrickPlanes); ++s)
+        for (int v = v0; v < std::min(n[c], v0 + rows); ++v)
+          for (int u = 0; u < n[b]; ++u) {
+            int xyz[3];
+            xyz[a] = s;
+            xyz[b] = u;
+            xyz[c] = v;
+            const long i = lattice.index(xyz[0], xyz[1], xyz[2]);
+            if (!lattice.fluid[static_cast<std::size_t>(i)]) continue;
+            node_of[static_cast<std::size_t>(i)] = static_cast<long>(site.size());
+            site.push_back(i);
+          }
   fluid = static_cast<long>(site.size());
   if (fluid == 0) throw UsageError("pore lattice has no fluid node");
   stride = (fluid + kBatch - 1) / kBatch * kBatch;

@@ -172,11 +172,26 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   }
 }
 
+// A block line of 8 doubles from 8 slots and back, element by element (insert and extract of
+// 128-bit halves). Zen 5 runs these faster than one AVX-512 gather or scatter when the slots
+// lie scattered, as on porous lattices: bench_lbm's porous box's odd steps on two threads went
+// from 48-50 to 53-57 MLUPS; where most lines are consecutive (dense boxes) the other lines are
+// mostly runs across two blocks, and the gather and scatter held their own (75-78 against
+// 71-80), so those chunks keep them.
+[[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline Lanes load_line(const double* F, const std::uint32_t* s) {
+  return Lanes{F[s[0]], F[s[1]], F[s[2]], F[s[3]], F[s[4]], F[s[5]], F[s[6]], F[s[7]]};
+}
+[[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline void store_line(double* F, const std::uint32_t* s, Lanes v) {
+#pragma GCC unroll 8
+  for (int b = 0; b < kBatch; ++b) F[s[b]] = v[b];
+}
+
 // One AA step over [r.begin, r.end) in double precision with AVX-512 (x86-64-v4): the
 // collision works on a block's 19 lines as 19 vectors (one node per lane), loaded and stored
-// in place by the even steps, gathered from and scattered to the neighbours' slots through
-// the link table by the odd steps (or, for the lines that r.consecutive marks, loaded and
-// stored as one vector: on bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's
+// in place by the even steps, moved element by element from and to the neighbours' slots
+// through the link table by the odd steps (load_line, store_line); in the chunks where
+// r.consecutive marks lines that are loaded and stored as one vector, the other lines go by
+// AVX-512 gather and scatter (the consecutive lines: on bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's
 // odd steps from ~45 to ~51 MLUPS; its porous box, 6.5 % of lines, lost ~10 % to the branch,
 // so the solver passes r.consecutive only where such lines are common). Same operations in the
 // same order as sweep_batches, so the same bits.
@@ -208,7 +223,8 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
         const std::uint32_t* slots = link + kBatch * (opposite(q) - 1);
-        if (consecutive >> opposite(q) & 1) f[q] = _mm512_loadu_pd(F + slots[0]);
+        if (!kConsecutive) f[q] = load_line(F, slots);
+        else if (consecutive >> opposite(q) & 1) f[q] = _mm512_loadu_pd(F + slots[0]);
         else f[q] = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), F, 8);
       }
     }
@@ -221,7 +237,8 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
         const std::uint32_t* slots = link + kBatch * (q - 1);
-        if (consecutive >> q & 1) _mm512_storeu_pd(F + slots[0], f[q]);
+        if (!kConsecutive) store_line(F, slots, f[q]);
+        else if (consecutive >> q & 1) _mm512_storeu_pd(F + slots[0], f[q]);
         else _mm512_i32scatter_pd(F, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), f[q], 8);
       }
     }
