@@ -216,9 +216,22 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 19
       for (int q = 0; q < kQ; ++q) f[q] = _mm512_loadu_pd(own + kBatch * q);
     } else {
+      // The neighbours' slots of the block kPrefetchAhead blocks ahead: where lines are mostly
+      // consecutive, the slot of lane 0 (its cache line holds most of the line); elsewhere every
+      // slot, since a scattered line touches up to 8 cache lines (bench_lbm's porous box, odd
+      // steps on two threads: 60 -> 77 MLUPS, one thread 33 -> 44; lanes 0, 2, 4, 6, 7: 72;
+      // lanes 0 and 7: 67; every slot 3 or 6 blocks ahead: 67; on the dense box every slot
+      // cost 18 %).
       const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * kBatch;
+      if constexpr (kConsecutive) {
 #pragma GCC unroll 18
-      for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[kBatch * (q - 1)], 1);
+        for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[kBatch * (q - 1)], 1);
+      } else {
+#pragma GCC unroll 18
+        for (int q = 1; q < kQ; ++q)
+#pragma GCC unroll 8
+          for (int b = 0; b < kBatch; ++b) __builtin_prefetch(F + ahead[kBatch * (q - 1) + b], 1);
+      }
       f[0] = _mm512_loadu_pd(own);
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
