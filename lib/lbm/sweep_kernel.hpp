@@ -172,15 +172,12 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   }
 }
 
-// A block line of 8 doubles from 8 slots and back, element by element (insert and extract of
-// 128-bit halves). Zen 5 runs these faster than one AVX-512 gather or scatter when the slots
-// lie scattered, as on porous lattices: bench_lbm's porous box's odd steps on two threads went
-// from 48-50 to 53-57 MLUPS; where most lines are consecutive (dense boxes) the other lines are
-// mostly runs across two blocks, and the gather and scatter held their own (75-78 against
-// 71-80), so those chunks keep them.
-[[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline Lanes load_line(const double* F, const std::uint32_t* s) {
-  return Lanes{F[s[0]], F[s[1]], F[s[2]], F[s[3]], F[s[4]], F[s[5]], F[s[6]], F[s[7]]};
-}
+// A block line of 8 doubles to 8 slots, element by element. Zen 5 runs these 8 stores faster
+// than one AVX-512 scatter when the slots lie scattered, as on porous lattices (bench_lbm's
+// porous box, odd steps on two threads: 48-50 -> 53-57 MLUPS with element-wise loads as well;
+// once every slot is prefetched, the gather beats element-wise loads again, 73 -> 78). Where
+// most lines are consecutive (dense boxes) the other lines are mostly runs across two blocks,
+// and the scatter held its own, so those chunks keep it.
 [[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline void store_line(double* F, const std::uint32_t* s, Lanes v) {
 #pragma GCC unroll 8
   for (int b = 0; b < kBatch; ++b) F[s[b]] = v[b];
@@ -188,8 +185,8 @@ template <class Real, bool kOdd, bool kForce, class Relax>
 
 // One AA step over [r.begin, r.end) in double precision with AVX-512 (x86-64-v4): the
 // collision works on a block's 19 lines as 19 vectors (one node per lane), loaded and stored
-// in place by the even steps, moved element by element from and to the neighbours' slots
-// through the link table by the odd steps (load_line, store_line); in the chunks where
+// in place by the even steps, gathered from the neighbours' slots through the link table by
+// the odd steps and stored back element by element (store_line); in the chunks where
 // r.consecutive marks lines that are loaded and stored as one vector, the other lines go by
 // AVX-512 gather and scatter (the consecutive lines: on bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's
 // odd steps from ~45 to ~51 MLUPS; its porous box, 6.5 % of lines, lost ~10 % to the branch,
@@ -236,8 +233,7 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
         const std::uint32_t* slots = link + kBatch * (opposite(q) - 1);
-        if (!kConsecutive) f[q] = load_line(F, slots);
-        else if (consecutive >> opposite(q) & 1) f[q] = _mm512_loadu_pd(F + slots[0]);
+        if (kConsecutive && (consecutive >> opposite(q) & 1)) f[q] = _mm512_loadu_pd(F + slots[0]);
         else f[q] = _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), F, 8);
       }
     }
