@@ -172,12 +172,11 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   }
 }
 
-// A block line of 8 doubles to 8 slots, element by element. Zen 5 runs these 8 stores faster
-// than one AVX-512 scatter when the slots lie scattered, as on porous lattices (bench_lbm's
-// porous box, odd steps on two threads: 48-50 -> 53-57 MLUPS with element-wise loads as well;
-// once every slot is prefetched, the gather beats element-wise loads again, 73 -> 78). Where
-// most lines are consecutive (dense boxes) the other lines are mostly runs across two blocks,
-// and the scatter held its own, so those chunks keep it.
+// A block line of 8 doubles to 8 slots, element by element: on Zen 5 faster than one AVX-512
+// scatter (bench_lbm, odd steps on two threads: porous box 48-50 -> 53-57 MLUPS with
+// element-wise loads as well; dense box, whose scattered lines are runs across two blocks,
+// 88 -> 98). The loads stay gathers: once every slot is prefetched (below), the gather beats
+// element-wise loads (porous 73 -> 78).
 [[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline void store_line(double* F, const std::uint32_t* s, Lanes v) {
 #pragma GCC unroll 8
   for (int b = 0; b < kBatch; ++b) F[s[b]] = v[b];
@@ -186,10 +185,9 @@ template <class Real, bool kOdd, bool kForce, class Relax>
 // One AA step over [r.begin, r.end) in double precision with AVX-512 (x86-64-v4): the
 // collision works on a block's 19 lines as 19 vectors (one node per lane), loaded and stored
 // in place by the even steps, gathered from the neighbours' slots through the link table by
-// the odd steps and stored back element by element (store_line); in the chunks where
-// r.consecutive marks lines that are loaded and stored as one vector, the other lines go by
-// AVX-512 gather and scatter (the consecutive lines: on bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's
-// odd steps from ~45 to ~51 MLUPS; its porous box, 6.5 % of lines, lost ~10 % to the branch,
+// the odd steps and stored back element by element (store_line), except, in the chunks where
+// r.consecutive is set, the lines it marks, which are loaded and stored as one vector (on
+// bench_lbm's dense 128^3 box, 8 of 18 lines, that took one thread's odd steps from ~45 to ~51 MLUPS; its porous box, 6.5 % of lines, lost ~10 % to the branch,
 // so the solver passes r.consecutive only where such lines are common). Same operations in the
 // same order as sweep_batches, so the same bits.
 template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
@@ -246,9 +244,8 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
         const std::uint32_t* slots = link + kBatch * (q - 1);
-        if (!kConsecutive) store_line(F, slots, f[q]);
-        else if (consecutive >> q & 1) _mm512_storeu_pd(F + slots[0], f[q]);
-        else _mm512_i32scatter_pd(F, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(slots)), f[q], 8);
+        if (kConsecutive && (consecutive >> q & 1)) _mm512_storeu_pd(F + slots[0], f[q]);
+        else store_line(F, slots, f[q]);
       }
     }
   }
