@@ -4,6 +4,9 @@
 //                                              N^3 box (random overlapping spheres, porosity ~0.35),
 //                                              beside a STREAM-style triad measured in the same run,
 //                                              and of the even and odd AA steps alone
+//   bench_lbm triad THREADS                    the triad alone: GB/s and the MLUPS bound of a
+//                                              double D3Q19 update (bench_lbflow_run.sh puts it
+//                                              beside lbflow's own runs)
 //   bench_lbm sphere-array [N...]              kappa of the simple cubic sphere array against
 //                                              Zick & Homsy (1982) for several solid fractions and
 //                                              resolutions, half-way vs interpolated bounce-back
@@ -57,6 +60,10 @@ double triad_gbs(int threads) {
   return 24.0 * n / best / 1e9;
 }
 
+// The MLUPS bound of a double D3Q19 update at bandwidth bw GB/s: 19 populations read and
+// written, 2 x 19 x 8 bytes.
+double bound_mlups(double bw) { return bw * 1e9 / (2 * 19 * 8) / 1e6; }
+
 int speed(int n, int threads, const std::string& style, long steps, bool f32) {
   std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound,even_mlups,odd_mlups,precision\n");
   const double bw = triad_gbs(threads);
@@ -86,8 +93,7 @@ int speed(int n, int threads, const std::string& style, long steps, bool f32) {
       parity_best[parity] = std::min(parity_best[parity], now() - t0);
     }
     const double parity_mlups[2] = {solver.fluid_nodes() / parity_best[0] / 1e6, solver.fluid_nodes() / parity_best[1] / 1e6};
-    // Lower bound of the memory traffic of one update: 19 populations read and written.
-    const double bound = bw * 1e9 / (2 * 19 * 8) / 1e6;
+    const double bound = bound_mlups(bw);
     std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f,%.2f,%.2f,%s\n", porous ? "porous" : "dense", n,
                 p.porosity(), threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw,
                 bound, mlups / bound, parity_mlups[0], parity_mlups[1], f32 ? "float" : "double");
@@ -127,12 +133,17 @@ int main(int argc, char** argv) {
   if (mode == "speed" && argc >= 4)
     return speed(std::atoi(argv[2]), std::atoi(argv[3]), argc > 4 ? argv[4] : "mrt", argc > 5 ? std::atol(argv[5]) : 20,
                  argc > 6 && std::string(argv[6]) == "float");
+  if (mode == "triad" && argc == 3) {
+    const double bw = triad_gbs(std::atoi(argv[2]));
+    std::printf("triad_gbs,bound_mlups\n%.2f,%.1f\n", bw, bound_mlups(bw));
+    return 0;
+  }
   if (mode == "sphere-array") {
     std::vector<int> sizes;
     for (int i = 2; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
     if (sizes.empty()) sizes = {16, 24, 32};
     return sphere_array(sizes);
   }
-  std::fprintf(stderr, "usage: bench_lbm speed N THREADS [STYLE] [STEPS] [double|float] | sphere-array [N...]\n");
+  std::fprintf(stderr, "usage: bench_lbm speed N THREADS [STYLE] [STEPS] [double|float] | triad THREADS | sphere-array [N...]\n");
   return 2;
 }
