@@ -159,6 +159,7 @@ template <class Real, bool kOdd, bool kForce, class Relax>
   constexpr int B = kBatch;
   Real* __restrict F = r.f;
   const std::uint32_t* __restrict L = r.links;
+  const bool every_slot = r.consecutive == nullptr;
   for (long base = r.begin; base < r.end; base += B) {
     Real* __restrict own = F + kQ * base;                     // this block's populations
     const std::uint32_t* __restrict link = L + (kQ - 1) * base;  // this block's links
@@ -167,9 +168,17 @@ template <class Real, bool kOdd, bool kForce, class Relax>
       for (int q = 0; q < kQ; ++q) widen_line(own + B * q, q, f[q]);
     } else {
       // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
-      // follow the link table; the table has kPrefetchAhead blocks of padding at its end).
+      // follow the link table; the table has kPrefetchAhead blocks of padding at its end):
+      // the slot of lane 0 in chunks of mostly consecutive lines, every slot elsewhere, as
+      // sweep_blocks_v4 does (float storage, odd steps on two threads: porous box 49 -> 59
+      // MLUPS; the dense box lost 7 % with every slot).
       const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
-      for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
+      if (every_slot) {
+        for (int q = 1; q < kQ; ++q)
+          for (int b = 0; b < B; ++b) __builtin_prefetch(F + ahead[B * (q - 1) + b], 1);
+      } else {
+        for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
+      }
       for (int b = 0; b < B; ++b) f[0][b] = widen<Real>(own[b], 0);
       for (int q = 1; q < kQ; ++q)
         for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(F[link[B * (opposite(q) - 1) + b]], q);
