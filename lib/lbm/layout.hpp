@@ -20,7 +20,7 @@ inline constexpr int kBatch = 8;
 // axis, then along the flow axis; inside a brick plane by plane, row by row, along the fastest
 // axis. A node's neighbours in the next plane are then brick_rows() rows ahead in memory, not
 // a whole plane, so the lines an odd step gathers for one block are still in the core's L2
-// cache when the block on the other side scatters to them (two whole planes, 5 MB on a dense
+// cache when the block on the other side writes back to them (two whole planes, 5 MB on a dense
 // 128^2 box, were not): bricks took bench_lbm's odd steps on two threads from 79 to 92 MLUPS
 // on the dense box and from 59.5 to 61.7 on the porous one (one thread: no change; both
 // layouts stepped in turn in one process). kBrickPlanes planes are still one
