@@ -153,27 +153,6 @@ template <class Real>
 // Blocks ahead whose neighbour lines an odd step prefetches.
 inline constexpr int kPrefetchAhead = 4;
 
-// An odd step's prefetch of the neighbour lines of the block kPrefetchAhead blocks ahead
-// (`ahead`: its links; the hardware prefetchers do not follow the link table, which has
-// kPrefetchAhead blocks of padding at its end). Where lines are mostly consecutive, the slot
-// of lane 0 (its cache line holds most of the line); elsewhere every slot, since a scattered
-// line touches up to 8 cache lines. bench_lbm's porous box, odd steps on two threads: 60 -> 77
-// MLUPS with the AVX-512 sweep (one thread 33 -> 44; lanes 0, 2, 4, 6, 7: 72; lanes 0 and 7:
-// 67; every slot 3 or 6 blocks ahead: 67), 49 -> 59 with float storage; on the dense box
-// every slot cost 18 % and 7 %.
-template <class Real>
-[[gnu::always_inline]] inline void prefetch_neighbours(const Real* F, const std::uint32_t* ahead, bool every_slot) {
-  if (every_slot) {
-#pragma GCC unroll 18
-    for (int q = 1; q < kQ; ++q)
-#pragma GCC unroll 8
-      for (int b = 0; b < kBatch; ++b) __builtin_prefetch(F + ahead[kBatch * (q - 1) + b], 1);
-  } else {
-#pragma GCC unroll 18
-    for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[kBatch * (q - 1)], 1);
-  }
-}
-
 // One AA step over [r.begin, r.end).
 template <class Real, bool kOdd, bool kForce, class Relax>
 [[gnu::always_inline]] inline void sweep_batches(const SweepRange<Real>& r, const Relax& relax) {
@@ -188,7 +167,18 @@ template <class Real, bool kOdd, bool kForce, class Relax>
     if constexpr (!kOdd) {
       for (int q = 0; q < kQ; ++q) widen_line(own + B * q, q, f[q]);
     } else {
-      prefetch_neighbours(F, link + (kQ - 1) * kPrefetchAhead * B, every_slot);
+      // The neighbours' lines of a batch a few blocks ahead (the hardware prefetchers do not
+      // follow the link table; the table has kPrefetchAhead blocks of padding at its end):
+      // the slot of lane 0 in chunks of mostly consecutive lines, every slot elsewhere, as
+      // sweep_blocks_v4 does (float storage, odd steps on two threads: porous box 49 -> 59
+      // MLUPS; the dense box lost 7 % with every slot).
+      const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * B;
+      if (every_slot) {
+        for (int q = 1; q < kQ; ++q)
+          for (int b = 0; b < B; ++b) __builtin_prefetch(F + ahead[B * (q - 1) + b], 1);
+      } else {
+        for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[B * (q - 1)], 1);
+      }
       for (int b = 0; b < B; ++b) f[0][b] = widen<Real>(own[b], 0);
       for (int q = 1; q < kQ; ++q)
         for (int b = 0; b < B; ++b) f[q][b] = widen<Real>(F[link[B * (opposite(q) - 1) + b]], q);
@@ -244,7 +234,22 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
 #pragma GCC unroll 19
       for (int q = 0; q < kQ; ++q) f[q] = _mm512_loadu_pd(own + kBatch * q);
     } else {
-      prefetch_neighbours(F, link + (kQ - 1) * kPrefetchAhead * kBatch, !kConsecutive);
+      // The neighbours' slots of the block kPrefetchAhead blocks ahead: where lines are mostly
+      // consecutive, the slot of lane 0 (its cache line holds most of the line); elsewhere every
+      // slot, since a scattered line touches up to 8 cache lines (bench_lbm's porous box, odd
+      // steps on two threads: 60 -> 77 MLUPS, one thread 33 -> 44; lanes 0, 2, 4, 6, 7: 72;
+      // lanes 0 and 7: 67; every slot 3 or 6 blocks ahead: 67; on the dense box every slot
+      // cost 18 %).
+      const std::uint32_t* ahead = link + (kQ - 1) * kPrefetchAhead * kBatch;
+      if constexpr (kConsecutive) {
+#pragma GCC unroll 18
+        for (int q = 1; q < kQ; ++q) __builtin_prefetch(F + ahead[kBatch * (q - 1)], 1);
+      } else {
+#pragma GCC unroll 18
+        for (int q = 1; q < kQ; ++q)
+#pragma GCC unroll 8
+          for (int b = 0; b < kBatch; ++b) __builtin_prefetch(F + ahead[kBatch * (q - 1) + b], 1);
+      }
       f[0] = _mm512_loadu_pd(own);
 #pragma GCC unroll 18
       for (int q = 1; q < kQ; ++q) {
