@@ -88,8 +88,8 @@ struct FlowSolver::Impl {
   // pressure_planes.cpp
   template <class Real>
   void apply_pressure_planes(Real* F, bool after_odd) const;
-  template <class Real>
-  void pressure_node(Real* F, const PressureNode& p, bool after_odd) const;
+  template <int A, class Real>
+  void pressure_nodes(Real* F, long begin, long end, bool after_odd) const;
   // flow_step.cpp
   template <class Real>
   void step_once();
