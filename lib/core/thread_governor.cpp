@@ -15,6 +15,11 @@ constexpr double kLongestExploitSeconds = 1.0;
 constexpr double kMargin = 1.05;
 // A first epoch shorter than this measures too few iterations to compare.
 constexpr double kShortestFirstSeconds = 0.01;
+// A probe lasts at least one iteration, so where an iteration is long a probe every second
+// costs more than it should: lbflow's thesis-sized lattice steps for ~45 ms, and one step in
+// ~23 on one thread cost ~3 %. A long epoch is therefore also at least this many iterations
+// (a probe at most ~2 % of them).
+constexpr double kShortestExploitTicks = 50;
 
 // What the last governor learned, for the next one: a run makes thousands of short
 // relaxations, and each starting afresh on all threads (50 ms before its first probe) spent
@@ -93,9 +98,9 @@ void ThreadGovernor::tick() {
   if (rate > kMargin * rate_current_) {
     chosen_ = current_;
     ++switches_;
-    exploit_seconds_ = kFirstExploitSeconds;
+    exploit_seconds_ = std::max(kFirstExploitSeconds, kShortestExploitTicks / rate);
   } else {
-    exploit_seconds_ = std::min(2 * exploit_seconds_, kLongestExploitSeconds);
+    exploit_seconds_ = std::max(std::min(2 * exploit_seconds_, kLongestExploitSeconds), kShortestExploitTicks / rate_current_);
   }
   start_epoch(chosen_, exploit_seconds_);
 }

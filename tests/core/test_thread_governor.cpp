@@ -37,6 +37,24 @@ TEST_CASE("thread governor: moves to one thread when two run slower and back whe
   CHECK(omp_get_max_threads() == 2);  // restored
 }
 
+TEST_CASE("thread governor: long iterations are probed rarely") {
+  // Iterations of 20 ms (lbflow's thesis-sized lattice steps for ~45 ms), as fast on either
+  // choice: each probe costs a whole iteration, so a long epoch must hold at least 50 of them.
+  // With epochs by time alone (50, 100, 200, 400, 800 ms) 75 iterations held 4 probes.
+  omp_set_num_threads(2);
+  cmp::ThreadGovernor::forget();
+  cmp::ThreadGovernor g(2);
+  int probes = 0;
+  for (int k = 0; k < 75; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    g.tick();
+    if (k < 74 && g.threads() == 1) ++probes;  // the next iteration is a probe
+  }
+  INFO("probes in 75 iterations of 20 ms: " << probes);
+  CHECK(probes >= 1);
+  CHECK(probes <= 2);
+}
+
 TEST_CASE("thread governor: inert for one thread and inside a parallel region") {
   omp_set_num_threads(2);
   cmp::ThreadGovernor one(1);
