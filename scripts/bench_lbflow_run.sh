@@ -4,8 +4,9 @@
 # through the whole program at M = 1 to convergence on 1 and 2 threads, and at M = 3 (the
 # thesis's ~10^7 nodes) for LBFLOW_M3_STEPS (400) steps: speed, memory per fluid node and peak
 # memory; the time to convergence at M = 3 is estimated from the M = 1 steps times 1.4 (what
-# the M = 3 runs of make flow-figure took over M = 1). Each row has the bandwidth bound of a
-# triad measured just before it on as many threads (bench_lbm triad), as the kernel rows do.
+# the M = 3 runs of make flow-figure took over M = 1). Each row has the bandwidth bounds of a
+# triad measured just before it on as many threads (bench_lbm triad: 304 bytes per update, and
+# 340 with the link table's), as the kernel rows do.
 # Sourced by scripts/bench.sh ($build, $bench, $out, $machine, $stamp).
 echo "== lbflow: N = 50 jammed spheres, delta = 0.04: M = 1 to convergence, M = 3 for ${LBFLOW_M3_STEPS:-400} steps" >&2
 lb_dir=$(mktemp -d)
@@ -27,7 +28,7 @@ PY
 {
   echo "# machine=$machine"
   echo "# date=$stamp"
-  echo "refine,threads,voxels_per_side,nodes,fluid_nodes,porosity,steps,converged,seconds,mlups,bytes_per_fluid_node,peak_rss_mb,permeability_d02,tortuosity,triad_gbs,bound_mlups"
+  echo "refine,threads,voxels_per_side,nodes,fluid_nodes,porosity,steps,converged,seconds,mlups,bytes_per_fluid_node,peak_rss_mb,permeability_d02,tortuosity,triad_gbs,bound_mlups,bound_with_links_mlups"
   lb_row 1 1 200000
   lb_row 1 2 200000
   lb_row 3 2 "${LBFLOW_M3_STEPS:-400}"

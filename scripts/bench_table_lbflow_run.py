@@ -12,8 +12,11 @@ def _row(r):
     mlups = float(r["mlups"])
     bound = ""
     if r.get("bound_mlups"):
+        links = ""
+        if r.get("bound_with_links_mlups"):
+            links = f"; with the links' bytes, 340 B per update: {mlups / float(r['bound_with_links_mlups']):.2f}"
         bound = (f" = {mlups / float(r['bound_mlups']):.2f} of the (double) triad bound measured just before "
-                 f"({float(r['triad_gbs']):.1f} GB/s -> {float(r['bound_mlups']):.0f} MLUPS)")
+                 f"({float(r['triad_gbs']):.1f} GB/s -> {float(r['bound_mlups']):.0f} MLUPS{links})")
     if r["converged"] == "1":
         figure = (f"{s:.0f} s to convergence ({steps} steps), {mlups:.0f} MLUPS{bound}, "
                   f"{float(r['bytes_per_fluid_node']):.0f} B/fluid node, peak {r['peak_rss_mb']} MB")

@@ -105,6 +105,13 @@ class FlowSolver {
   long fluid_nodes() const;
   // Storage per fluid node: populations + link table (+ interpolated-wall data, averaged).
   double bytes_per_fluid_node() const;
+  // Memory traffic of one step per fluid node, the bytes a bandwidth bound divides by: every
+  // population read and written once (the AA pattern works in place: no write-allocate), the
+  // link table read on odd steps only, the per-block bits of lbm/layout.hpp's consecutive lines
+  // likewise where a chunk uses them; over every node the sweep covers. The boundary passes
+  // (pressure planes, interpolated walls) are not counted. Double: 2 x 19 x 8 + 18 x 4 / 2 =
+  // 340 bytes on a lattice without padding.
+  double bytes_moved_per_update() const;
   // Links with interpolated (Bouzidi) bounce-back, and all solid wall links.
   long interpolated_links() const;
   const FlowSettings& settings() const;

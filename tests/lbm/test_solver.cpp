@@ -153,6 +153,28 @@ TEST_CASE("solver: float storage keeps kappa within 0.1 % of double") {
   }
 }
 
+TEST_CASE("solver: the bytes a step moves per fluid node, as the bandwidth bound counts them") {
+  // A dense 16^3 box: no padding, and its chunks read the consecutive-line bits (4 bytes per
+  // block of 8 nodes, on odd steps); 19 populations read and written, 18 links of 4 bytes read
+  // every other step.
+  FlowSettings s = pressure_settings();
+  s.driving = Driving::kBodyForce;
+  s.body_force = 1e-5;
+  FlowSolver d(open_box(16, 16, 16), s);
+  CHECK(d.bytes_moved_per_update() == Approx(2 * 19 * 8 + 18 * 4 / 2 + 4.0 / 8 / 2).epsilon(1e-12));
+  s.precision = Precision::kFloat;
+  FlowSolver f(open_box(16, 16, 16), s);
+  CHECK(f.bytes_moved_per_update() == Approx(2 * 19 * 4 + 18 * 4 / 2 + 4.0 / 8 / 2).epsilon(1e-12));
+  // A porous lattice: the padding of the last block counts (and the bits, where a chunk uses them).
+  s.precision = Precision::kDouble;
+  s.driving = Driving::kPressure;
+  FlowSolver p(porous(), s);
+  const double nodes_swept = std::ceil(static_cast<double>(p.fluid_nodes()) / 8) * 8;
+  const double populations_and_links = 340.0 * nodes_swept / static_cast<double>(p.fluid_nodes());
+  CHECK(p.bytes_moved_per_update() >= populations_and_links - 1e-9);
+  CHECK(p.bytes_moved_per_update() <= populations_and_links + 0.25 + 1e-9);
+}
+
 TEST_CASE("solver: mass is conserved in a periodic porous box") {
   FlowSettings s = pressure_settings();
   s.driving = Driving::kBodyForce;
