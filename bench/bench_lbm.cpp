@@ -2,8 +2,8 @@
 //   bench_lbm speed N THREADS [STYLE] [STEPS] [double|float]
 //                                              MLUPS of a dense N^3 periodic box and of a porous
 //                                              N^3 box (random overlapping spheres, porosity ~0.35),
-//                                              beside a STREAM-style triad measured in the same run
-//                                              and the two bounds it gives (304 bytes per update,
+//                                              beside a STREAM-style triad measured just before and
+//                                              after each (the higher) and the two bounds it gives (304 bytes per update,
 //                                              and the bytes the solver moves, links included),
 //                                              and of the even and odd AA steps alone
 //   bench_lbm triad THREADS                    the triad alone: GB/s and the MLUPS bounds of a
@@ -83,8 +83,11 @@ double bound_mlups(double bw, double bytes = 2 * 19 * 8) { return bw * 1e9 / byt
 
 int speed(int n, int threads, const std::string& style, long steps, bool f32) {
   std::printf("case,N,porosity,threads,collision,fluid_nodes,steps,seconds,mlups,bytes_per_node,triad_gbs,bound_mlups,fraction_of_bound,even_mlups,odd_mlups,precision,update_bytes,bound_with_links_mlups,fraction_with_links\n");
-  const double bw = triad_gbs(threads);
   for (int porous = 0; porous < 2; ++porous) {
+    // The triad just before the case and just after it, the higher counted: this machine's
+    // bandwidth moved between 40 and 75 GB/s within an hour while the kernel's MLUPS did not,
+    // so a bound from one triad alone could fall in a dip.
+    const double bw_before = triad_gbs(threads);
     const PoreLattice p = porous ? random_sphere_box(n, 0.35, 2026) : open_box(n, n, n);
     FlowSettings s;
     s.collision = style;
@@ -110,6 +113,8 @@ int speed(int n, int threads, const std::string& style, long steps, bool f32) {
       parity_best[parity] = std::min(parity_best[parity], now() - t0);
     }
     const double parity_mlups[2] = {solver.fluid_nodes() / parity_best[0] / 1e6, solver.fluid_nodes() / parity_best[1] / 1e6};
+    const double bw = std::max(bw_before, triad_gbs(threads));
+    omp_set_num_threads(threads);
     const double bound = bound_mlups(bw), own = bound_mlups(bw, solver.bytes_moved_per_update());
     std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f,%.2f,%.2f,%s,%.1f,%.1f,%.3f\n", porous ? "porous" : "dense", n,
                 p.porosity(), threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw,
