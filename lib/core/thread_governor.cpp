@@ -98,7 +98,7 @@ void ThreadGovernor::tick() {
   if (rate > kMargin * rate_current_) {
     chosen_ = current_;
     ++switches_;
-    exploit_seconds_ = std::max(kFirstExploitSeconds, kShortestExploitTicks / rate);
+    exploit_seconds_ = kFirstExploitSeconds;  // soon checked again: a noisy probe may have misled
   } else {
     exploit_seconds_ = std::max(std::min(2 * exploit_seconds_, kLongestExploitSeconds), kShortestExploitTicks / rate_current_);
   }

@@ -23,11 +23,14 @@ void FlowSolver::Impl::step_once() {
 
 void FlowSolver::step(long n) {
   if (n <= 0) return;
+  // The governor's iteration is a pair of steps: an odd step costs about twice an even one, so
+  // a one-step probe compared one parity with the average of both (on the thesis-sized lattice
+  // one-thread probes read 6 or 20 steps/s against 21 on two threads, nearly switching).
   ThreadGovernor governor;
   for (long k = 0; k < n; ++k) {
     if (impl_->settings.precision == Precision::kFloat) impl_->step_once<float>();
     else impl_->step_once<double>();
-    governor.tick();
+    if ((impl_->steps & 1) == 0) governor.tick();
   }
 }
 
