@@ -17,8 +17,9 @@ constexpr double kMargin = 1.05;
 constexpr double kShortestFirstSeconds = 0.01;
 // A probe lasts at least one iteration, so where an iteration is long a probe every second
 // costs more than it should: lbflow's thesis-sized lattice steps for ~45 ms, and one step in
-// ~23 on one thread cost ~3 %. A long epoch is therefore also at least this many iterations
-// (a probe at most ~2 % of them).
+// ~23 on one thread cost ~3 %. A long epoch that follows a confirming probe is therefore also
+// at least this many iterations (a probe at most ~2 % of them); right after a switch the next
+// probe still comes after kFirstExploitSeconds, so a switch a noisy probe misled is undone soon.
 constexpr double kShortestExploitTicks = 50;
 
 // What the last governor learned, for the next one: a run makes thousands of short
