@@ -3,8 +3,9 @@
 //                                              MLUPS of a dense N^3 periodic box and of a porous
 //                                              N^3 box (random overlapping spheres, porosity ~0.35),
 //                                              beside a STREAM-style triad measured just before and
-//                                              after each (the higher) and the two bounds it gives (304 bytes per update,
-//                                              and the bytes the solver moves, links included),
+//                                              after each (the higher) and the two bounds it gives
+//                                              (304 bytes per update, and the bytes the solver
+//                                              moves, links included),
 //                                              and of the even and odd AA steps alone
 //   bench_lbm triad THREADS                    the triad alone: GB/s and the MLUPS bounds of a
 //                                              double D3Q19 update, 304 and 340 bytes
@@ -77,8 +78,8 @@ double triad_gbs(int threads) {
 }
 
 // The MLUPS bound at bandwidth bw GB/s of an update that moves `bytes`: 2 x 19 x 8 = 304 for
-// the double populations alone (the floor), FlowSolver::bytes_moved_per_update() with
-// the link table's bytes (340 in double).
+// the double populations alone (the floor), update_bytes() or
+// FlowSolver::bytes_moved_per_update() with the link table's bytes (340 in double).
 double bound_mlups(double bw, double bytes = 2 * 19 * 8) { return bw * 1e9 / bytes / 1e6; }
 
 int speed(int n, int threads, const std::string& style, long steps, bool f32) {
@@ -114,7 +115,6 @@ int speed(int n, int threads, const std::string& style, long steps, bool f32) {
     }
     const double parity_mlups[2] = {solver.fluid_nodes() / parity_best[0] / 1e6, solver.fluid_nodes() / parity_best[1] / 1e6};
     const double bw = std::max(bw_before, triad_gbs(threads));
-    omp_set_num_threads(threads);
     const double bound = bound_mlups(bw), own = bound_mlups(bw, solver.bytes_moved_per_update());
     std::printf("%s,%d,%.4f,%d,%s,%ld,%ld,%.4f,%.2f,%.1f,%.2f,%.1f,%.3f,%.2f,%.2f,%s,%.1f,%.1f,%.3f\n", porous ? "porous" : "dense", n,
                 p.porosity(), threads, style.c_str(), solver.fluid_nodes(), steps, best, mlups, solver.bytes_per_fluid_node(), bw,
@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
                  argc > 6 && std::string(argv[6]) == "float");
   if (mode == "triad" && argc == 3) {
     const double bw = triad_gbs(std::atoi(argv[2]));
-    std::printf("triad_gbs,bound_mlups,bound_with_links_mlups\n%.2f,%.1f,%.1f\n", bw, bound_mlups(bw), bound_mlups(bw, 2 * 19 * 8 + 18 * 4 / 2));
+    std::printf("triad_gbs,bound_mlups,bound_with_links_mlups\n%.2f,%.1f,%.1f\n", bw, bound_mlups(bw), bound_mlups(bw, update_bytes(Precision::kDouble)));
     return 0;
   }
   if (mode == "sphere-array") {

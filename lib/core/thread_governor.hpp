@@ -8,8 +8,9 @@
 //
 // It alternates short probe epochs (about 5 ms) of the other choice with long epochs of the
 // faster one (growing from 50 ms to about 1 s while the choice holds, and then never fewer
-// than 50 iterations), so a wrong guess costs a few per cent at most. The choice carries over from one governor to the next in the
-// process (a run makes many short relaxations), as does the time the next probe is due.
+// than 50 iterations), so a wrong guess costs a few per cent at most. The choice carries over
+// from one governor to the next in the process (a run makes many short relaxations), as does
+// the time the next probe is due.
 #include <chrono>
 
 namespace cmp {

@@ -75,14 +75,17 @@ double FlowSolver::bytes_per_fluid_node() const {
   return total / static_cast<double>(m.fluid);
 }
 
+double update_bytes(Precision precision) {
+  const double pop = precision == Precision::kFloat ? sizeof(float) : sizeof(double);
+  return 2 * kQ * pop + 0.5 * (kQ - 1) * sizeof(std::uint32_t);
+}
+
 double FlowSolver::bytes_moved_per_update() const {
   const Impl& m = *impl_;
-  const double pop = m.settings.precision == Precision::kFloat ? sizeof(float) : sizeof(double);
   double bits_blocks = 0;  // blocks whose odd sweep reads their consecutive-line bits
   for (int c = 0; c < m.chunks && !m.consecutive.empty(); ++c)
     if (m.chunk_consecutive[static_cast<std::size_t>(c)]) bits_blocks += static_cast<double>(m.chunk_start(c + 1) - m.chunk_start(c)) / kBatch;
-  const double per_step = static_cast<double>(m.stride) * (2 * kQ * pop + 0.5 * (kQ - 1) * sizeof(std::uint32_t)) +
-                          0.5 * bits_blocks * sizeof(std::uint32_t);
+  const double per_step = static_cast<double>(m.stride) * update_bytes(m.settings.precision) + 0.5 * bits_blocks * sizeof(std::uint32_t);
   return per_step / static_cast<double>(m.fluid);
 }
 

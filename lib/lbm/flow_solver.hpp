@@ -86,6 +86,11 @@ struct FlowObservables {           // every field in lattice units
   double pressure_gradient = 0;    // the |grad p| used in kappa_lu (c_s^2 drop / (n - 1), or g)
 };
 
+// Memory traffic of one update of one fluid node, the bytes a bandwidth bound divides by: the
+// 19 populations read and written once (the AA pattern works in place: no write-allocate) and
+// the 18 four-byte links, read on odd steps only. Double: 2 x 19 x 8 + 18 x 4 / 2 = 340.
+double update_bytes(Precision precision);
+
 class FlowSolver {
  public:
   // Builds the link table and starts from rest at the linear density profile of the
@@ -105,12 +110,10 @@ class FlowSolver {
   long fluid_nodes() const;
   // Storage per fluid node: populations + link table (+ interpolated-wall data, averaged).
   double bytes_per_fluid_node() const;
-  // Memory traffic of one step per fluid node, the bytes a bandwidth bound divides by: every
-  // population read and written once (the AA pattern works in place: no write-allocate), the
-  // link table read on odd steps only, the per-block bits of lbm/layout.hpp's consecutive lines
-  // likewise where a chunk uses them; over every node the sweep covers. The boundary passes
-  // (pressure planes, interpolated walls) are not counted. Double: 2 x 19 x 8 + 18 x 4 / 2 =
-  // 340 bytes on a lattice without padding.
+  // Memory traffic of one step per fluid node: update_bytes() over every node the sweep covers
+  // (the last block's padding included), plus the per-block bits of lbm/layout.hpp's
+  // consecutive lines, read on odd steps where a chunk uses them. The boundary passes
+  // (pressure planes, interpolated walls) are not counted.
   double bytes_moved_per_update() const;
   // Links with interpolated (Bouzidi) bounce-back, and all solid wall links.
   long interpolated_links() const;
