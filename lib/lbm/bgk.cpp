@@ -10,9 +10,13 @@ namespace {
 struct BgkRelax {
   double omega;
   template <class V>
-  [[gnu::always_inline]] void operator()(V (&g)[kQ]) const {
-#pragma GCC unroll 19
-    for (int q = 0; q < kQ; ++q) g[q] *= omega;
+  [[gnu::always_inline]] void operator()(V (&ev)[kPairs + 1], V (&od)[kPairs + 1]) const {
+    ev[0] *= omega;
+#pragma GCC unroll 9
+    for (int p = 1; p <= kPairs; ++p) {
+      ev[p] *= omega;
+      od[p] *= omega;
+    }
   }
 };
 

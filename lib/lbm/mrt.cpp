@@ -12,9 +12,12 @@
 //
 // Implementation: the basis is orthogonal, so the collision R g = sum_k s_k M_k (M_k.g)/|M_k|^2
 // is s_nu g+ (even part) + s_q g- (odd part) plus rank-one corrections for the four even
-// ghosts and the three m moments, each on the 10 even or 9 odd pair values.
+// ghosts and, in mrt-dh, the three m moments, on the 10 even or 9 odd pair values that the
+// sweep kernel hands over (lbm/sweep_kernel.hpp).
 #include "lbm/collision_styles.hpp"
 #include "lbm/sweep_kernel.hpp"
+
+#include <initializer_list>
 
 namespace cmp::lbm {
 
@@ -56,84 +59,109 @@ constexpr Rows make_rows() {
 
 constexpr Rows kRows = make_rows();
 
+// Each even ghost row takes one value on the rest direction, on the three axes and on the six
+// face diagonals, or one per axis and per coordinate plane: the moments below are sums over
+// those classes (the general sums over 10 pairs for 4 moments, and the corrections back,
+// took three times the operations).
+constexpr bool same(std::initializer_list<double> values) {
+  for (double v : values)
+    if (v != *values.begin()) return false;
+  return true;
+}
+constexpr auto& kE = kRows.even;
+static_assert(same({kE[0][1], kE[0][2], kE[0][3]}) && same({kE[0][4], kE[0][5], kE[0][6], kE[0][7], kE[0][8], kE[0][9]}));
+static_assert(same({kE[1][1], kE[1][2], kE[1][3]}) && same({kE[1][4], kE[1][5], kE[1][6], kE[1][7], kE[1][8], kE[1][9]}));
+static_assert(kE[2][0] == 0 && kE[2][2] == kE[2][3] && same({kE[2][4], kE[2][5], kE[2][6], kE[2][7]}) && kE[2][8] == kE[2][9]);
+static_assert(same({kE[3][0], kE[3][1], kE[3][8], kE[3][9], 0}) && kE[3][2] == -kE[3][3] &&
+              same({kE[3][4], kE[3][5], -kE[3][6], -kE[3][7]}));
+// Pairs 1..3 are the axes x, y, z; 4, 5 the xy diagonals, 6, 7 the xz ones, 8, 9 the yz ones.
+static_assert(kCx[1] == 1 && kCy[2] == 1 && kCz[3] == 1 && kCz[4] == 0 && kCz[5] == 0 && kCy[6] == 0 && kCy[7] == 0 && kCx[8] == 0 && kCx[9] == 0);
+
+// kOddGhosts: the m moments relax at their own rate (mrt-dh); without, s_m = s_q and the odd
+// half is TRT's.
+template <bool kOddGhosts>
 struct MrtRelax {
   double s_nu, s_q;
   double even_coef[4];  // 2 (s_k - s_nu) / |M_k|^2: the 2 counts both members of a pair in M_k.g
   double odd_coef[3];   // 2 (s_m - s_q) / |M_k|^2
 
   template <class V>
-  [[gnu::always_inline]] void operator()(V (&g)[kQ]) const {
-    V ev[kPairs + 1], od[kPairs + 1];
-    ev[0] = g[0];
-    od[0] = V{};
-#pragma GCC unroll 9
-    for (int p = 1; p <= kPairs; ++p) {
-      ev[p] = 0.5 * (g[p] + g[p + kPairs]);
-      od[p] = 0.5 * (g[p] - g[p + kPairs]);
-    }
-    V oute[kPairs + 1], outo[kPairs + 1];
-#pragma GCC unroll 10
-    for (int q = 0; q <= kPairs; ++q) {
-      oute[q] = s_nu * ev[q];
-      outo[q] = s_q * od[q];
-    }
-#pragma GCC unroll 4
-    for (int k = 0; k < 4; ++k) {
-      V m = 0.5 * kRows.even[k][0] * ev[0];
-#pragma GCC unroll 9
-      for (int p = 1; p <= kPairs; ++p)
-        if (kRows.even[k][p] != 0) m += kRows.even[k][p] * ev[p];
-      m *= even_coef[k];
-#pragma GCC unroll 10
-      for (int q = 0; q <= kPairs; ++q)
-        if (kRows.even[k][q] != 0) oute[q] += kRows.even[k][q] * m;
-    }
+  [[gnu::always_inline]] void operator()(V (&ev)[kPairs + 1], V (&od)[kPairs + 1]) const {
+    constexpr auto& R = kE;
+    // The ghost moments (M_k.g / 2, pairs counted once), times their coefficients.
+    const V pxy = ev[4] + ev[5], pxz = ev[6] + ev[7], pyz = ev[8] + ev[9], ayz = ev[2] + ev[3];
+    const V axes = ev[1] + ayz, diagonals = pxy + pxz + pyz;
+    const V me = even_coef[0] * (0.5 * R[0][0] * ev[0] + R[0][1] * axes + R[0][4] * diagonals);
+    const V meps = even_coef[1] * (0.5 * R[1][0] * ev[0] + R[1][1] * axes + R[1][4] * diagonals);
+    const V mxx = even_coef[2] * (R[2][1] * ev[1] + R[2][2] * ayz + R[2][4] * (pxy + pxz) + R[2][8] * pyz);
+    const V mww = even_coef[3] * (R[3][3] * (ev[3] - ev[2]) + R[3][4] * (pxy - pxz));
+    // s_nu g+ plus sum_k M_k m_k, class by class.
+    const V on_axes = R[0][1] * me + R[1][1] * meps, on_diagonals = R[0][4] * me + R[1][4] * meps;
+    const V ayz_fix = on_axes + R[2][2] * mxx, ww_axis = R[3][3] * mww;
+    const V dxy_fix = on_diagonals + R[2][4] * mxx, ww_diagonal = R[3][4] * mww;
+    const V dyz_fix = on_diagonals + R[2][8] * mxx;
+    ev[0] = s_nu * ev[0] + (R[0][0] * me + R[1][0] * meps);
+    ev[1] = s_nu * ev[1] + (on_axes + R[2][1] * mxx);
+    ev[2] = s_nu * ev[2] + (ayz_fix - ww_axis);
+    ev[3] = s_nu * ev[3] + (ayz_fix + ww_axis);
+    ev[4] = s_nu * ev[4] + (dxy_fix + ww_diagonal);
+    ev[5] = s_nu * ev[5] + (dxy_fix + ww_diagonal);
+    ev[6] = s_nu * ev[6] + (dxy_fix - ww_diagonal);
+    ev[7] = s_nu * ev[7] + (dxy_fix - ww_diagonal);
+    ev[8] = s_nu * ev[8] + dyz_fix;
+    ev[9] = s_nu * ev[9] + dyz_fix;
+    if constexpr (kOddGhosts) {
+      V m[3];
 #pragma GCC unroll 3
-    for (int k = 0; k < 3; ++k) {
-      V m{};
+      for (int k = 0; k < 3; ++k) {
+        m[k] = V{};
 #pragma GCC unroll 9
-      for (int p = 1; p <= kPairs; ++p)
-        if (kRows.odd[k][p] != 0) m += kRows.odd[k][p] * od[p];
-      m *= odd_coef[k];
+        for (int p = 1; p <= kPairs; ++p)
+          if (kRows.odd[k][p] != 0) m[k] += kRows.odd[k][p] * od[p];
+        m[k] *= odd_coef[k];
+      }
 #pragma GCC unroll 9
-      for (int p = 1; p <= kPairs; ++p)
-        if (kRows.odd[k][p] != 0) outo[p] += kRows.odd[k][p] * m;
-    }
-    g[0] = oute[0];
+      for (int p = 1; p <= kPairs; ++p) {
+        od[p] *= s_q;
+#pragma GCC unroll 3
+        for (int k = 0; k < 3; ++k)
+          if (kRows.odd[k][p] != 0) od[p] += kRows.odd[k][p] * m[k];
+      }
+    } else {
 #pragma GCC unroll 9
-    for (int p = 1; p <= kPairs; ++p) {
-      g[p] = oute[p] + outo[p];
-      g[p + kPairs] = oute[p] - outo[p];
+      for (int p = 1; p <= kPairs; ++p) od[p] *= s_q;
     }
   }
 };
 
-template <class Real>
-[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void sweep_mrt(const SweepRange<Real>& r, const MrtRelax& relax) {
+template <class Real, bool kOddGhosts>
+[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void sweep_mrt(const SweepRange<Real>& r, const MrtRelax<kOddGhosts>& relax) {
   kernel::sweep(r, relax);
 }
 
 // d'Humieres et al. (2002) rates of the even ghost moments e, eps, pi_xx/pi_ww.
 constexpr double kSe = 1.19, kSeps = 1.4, kSpi = 1.4;
 
+template <bool kOddGhosts>
 std::unique_ptr<CollisionOperator> make(const char* name, const CollisionParameters& p, double s_q, double s_m) {
   check_collision_parameters(p);
-  MrtRelax r{};
+  MrtRelax<kOddGhosts> r{};
   r.s_nu = 1.0 / p.tau;
   r.s_q = s_q;
   const double even_rates[4] = {kSe, kSeps, kSpi, kSpi};
   for (int k = 0; k < 4; ++k) r.even_coef[k] = 2 * (even_rates[k] - r.s_nu) / kRows.even_norm[k];
   for (int k = 0; k < 3; ++k) r.odd_coef[k] = 2 * (s_m - s_q) / kRows.odd_norm[k];
-  return std::make_unique<kernel::OperatorFrom<MrtRelax>>(name, r, &sweep_mrt<double>, &sweep_mrt<float>);
+  return std::make_unique<kernel::OperatorFrom<MrtRelax<kOddGhosts>>>(name, r, &sweep_mrt<double, kOddGhosts>,
+                                                                      &sweep_mrt<float, kOddGhosts>);
 }
 
 }  // namespace
 
 std::unique_ptr<CollisionOperator> make_mrt(const CollisionParameters& p) {
   check_collision_parameters(p);
-  return make("mrt", p, odd_rate(p), odd_rate(p));
+  return make<false>("mrt", p, odd_rate(p), odd_rate(p));
 }
 
-std::unique_ptr<CollisionOperator> make_mrt_dh(const CollisionParameters& p) { return make("mrt-dh", p, 1.2, 1.98); }
+std::unique_ptr<CollisionOperator> make_mrt_dh(const CollisionParameters& p) { return make<true>("mrt-dh", p, 1.2, 1.98); }
 
 }  // namespace cmp::lbm

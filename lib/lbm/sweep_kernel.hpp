@@ -3,9 +3,12 @@
 // instantiates it with its own relaxation functor, so the relaxation is inlined into the loop
 // and the only virtual call is one per node range.
 //
-// A relaxation functor R has `template <class V> void operator()(V (&g)[kQ]) const`, replacing
-// the non-equilibrium part g of one node (V = double) or of a block's kBatch nodes (V = Lanes)
-// by R g (linear, see lbm/collision.hpp); R must be straight-line code.
+// A relaxation functor R has `template <class V> void operator()(V (&ev)[kPairs + 1],
+// V (&od)[kPairs + 1]) const`, replacing the non-equilibrium part g of one node (V = double) or
+// of a block's kBatch nodes (V = Lanes) by R g (linear, see lbm/collision.hpp), g given by its
+// halves over the pairs of opposite directions: ev[0] = g_0, ev[p] = (g_p + g_p+9)/2 and
+// od[p] = (g_p - g_p+9)/2 for p = 1..9 (od[0] is zero and not read back); R must be
+// straight-line code.
 //
 // Nodes go in blocks of kBatch. Double storage on an x86-64-v4 (AVX-512) processor: the
 // collision works on the block's 19 lines as 19 vectors (sweep_v4). Otherwise (float storage,
@@ -34,55 +37,85 @@ typedef double Lanes __attribute__((vector_size(kBatch * sizeof(double))));
 // Equilibrium, Guo forcing and relaxation of one node in place: f -> post-collision. Every
 // loop over directions is unrolled, so the velocities and weights are constants. V is double
 // (one node) or Lanes (a block's kBatch nodes, one per vector lane: the same operations in the
-// same order, so the same bits). f_again, when given, holds f unchanged in memory (f[q] at
-// f_again + q * lanes, lanes = 1 for double, kBatch for Lanes, any alignment): f is read
-// from it again after the relaxation instead of being kept in registers through it (the
-// forced collision holds f, g, s and the relaxation's temporaries, more than AVX-512's 32
-// registers, and spilled; reading the block's own lines again, still in L1, took the dense
-// box's even steps from 155 to 207 MLUPS on two threads. Without forcing it cost 10-15 % on
-// two threads, and on odd steps an explicit copy to the stack cost 7 %, so only forced even
-// steps use it).
+// same order, so the same bits). The work is done on the 9 pairs of opposite directions: the
+// equilibrium of p and of p + 9 share their symmetric part and differ in the sign of the odd
+// one, so the non-equilibrium's halves ev = (g_p + g_p+9)/2 and od = (g_p - g_p+9)/2 (what the
+// relaxation works on) come from the pair's sum and difference directly (written direction by
+// direction, the equilibrium, the split and the recombination took 40 % more floating-point
+// operations; the odd step, which cannot hide them behind memory, spends a third of its time
+// here). f_again, when given, holds f unchanged in memory (f[q] at f_again + q * lanes, lanes =
+// 1 for double, kBatch for Lanes, any alignment): f is read from it again after the relaxation
+// instead of being kept in registers through it (the forced collision holds f, g, s and the
+// relaxation's temporaries, more than AVX-512's 32 registers, and spilled; reading the
+// block's own lines again, still in L1, took the dense box's even steps from 155 to 207 MLUPS
+// on two threads. Without forcing it cost 10-15 % on two threads, and on odd steps an explicit
+// copy to the stack cost 7 %, so only forced even steps use it).
 template <bool kForce, class V, class Relax>
 [[gnu::always_inline]] inline void collide_node(V (&f)[kQ], double gx, double gy, double gz, const Relax& relax,
                                                 const double* f_again = nullptr) {
-  V rho{}, ux{}, uy{}, uz{};
-#pragma GCC unroll 19
-  for (int q = 0; q < kQ; ++q) {
-    rho += f[q];
-    if (kCx[q] != 0) ux += double(kCx[q]) * f[q];
-    if (kCy[q] != 0) uy += double(kCy[q]) * f[q];
-    if (kCz[q] != 0) uz += double(kCz[q]) * f[q];
+  V sum[kPairs + 1], diff[kPairs + 1];
+#pragma GCC unroll 9
+  for (int p = 1; p <= kPairs; ++p) {
+    sum[p] = f[p] + f[p + kPairs];
+    diff[p] = f[p] - f[p + kPairs];
+  }
+  V rho = f[0], ux{}, uy{}, uz{};
+#pragma GCC unroll 9
+  for (int p = 1; p <= kPairs; ++p) {
+    rho += sum[p];
+    if (kCx[p] != 0) ux += double(kCx[p]) * diff[p];
+    if (kCy[p] != 0) uy += double(kCy[p]) * diff[p];
+    if (kCz[p] != 0) uz += double(kCz[p]) * diff[p];
   }
   if constexpr (kForce) {
     ux += 0.5 * gx;
     uy += 0.5 * gy;
     uz += 0.5 * gz;
   }
-  const V uu = ux * ux + uy * uy + uz * uz;
-  V g[kQ], s[kQ];
-#pragma GCC unroll 19
-  for (int q = 0; q < kQ; ++q) {
-    const double w = weight(q);
-    const V cu = double(kCx[q]) * ux + double(kCy[q]) * uy + double(kCz[q]) * uz;
-    const V feq = w * (rho + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
-    g[q] = f[q] - feq;
+  const V rest = rho - 1.5 * (ux * ux + uy * uy + uz * uz);  // rho - 3/2 u.u
+  V ev[kPairs + 1], od[kPairs + 1], se[kPairs + 1];
+  double so[kPairs + 1] = {};  // the source's odd half: 3 w c.g, the same for every node
+  ev[0] = f[0] - weight(0) * rest;
+  od[0] = V{};
+  V ug{};
+  if constexpr (kForce) {
+    ug = ux * gx + uy * gy + uz * gz;
+    se[0] = weight(0) * (-3.0 * ug);
+    ev[0] += 0.5 * se[0];
+  }
+#pragma GCC unroll 9
+  for (int p = 1; p <= kPairs; ++p) {
+    const double w = weight(p);
+    V cu{};
+    if (kCx[p] != 0) cu += double(kCx[p]) * ux;
+    if (kCy[p] != 0) cu += double(kCy[p]) * uy;
+    if (kCz[p] != 0) cu += double(kCz[p]) * uz;
+    ev[p] = 0.5 * sum[p] - w * (rest + 4.5 * cu * cu);
+    od[p] = 0.5 * diff[p] - (3 * w) * cu;
     if constexpr (kForce) {
-      const double cg = kCx[q] * gx + kCy[q] * gy + kCz[q] * gz;
-      const V ug = ux * gx + uy * gy + uz * gz;
-      s[q] = w * (3.0 * cg + 9.0 * cu * cg - 3.0 * ug);
-      g[q] += 0.5 * s[q];
+      const double cg = kCx[p] * gx + kCy[p] * gy + kCz[p] * gz;
+      se[p] = w * (9.0 * cu * cg - 3.0 * ug);
+      so[p] = (3 * w) * cg;
+      ev[p] += 0.5 * se[p];
+      od[p] += 0.5 * so[p];
     }
   }
-  relax(g);
+  relax(ev, od);
   if (f_again) {
     asm volatile("" ::: "memory");  // so the compiler reads f_again here, not keeps the first read
 #pragma GCC unroll 19
     for (int q = 0; q < kQ; ++q) std::memcpy(&f[q], f_again + q * (sizeof(V) / sizeof(double)), sizeof(V));
   }
-#pragma GCC unroll 19
-  for (int q = 0; q < kQ; ++q) {
-    f[q] -= g[q];
-    if constexpr (kForce) f[q] += s[q];
+  f[0] -= ev[0];
+  if constexpr (kForce) f[0] += se[0];
+#pragma GCC unroll 9
+  for (int p = 1; p <= kPairs; ++p) {
+    f[p] -= ev[p] + od[p];
+    f[p + kPairs] -= ev[p] - od[p];
+    if constexpr (kForce) {
+      f[p] += se[p] + so[p];
+      f[p + kPairs] += se[p] - so[p];
+    }
   }
 }
 
@@ -233,6 +266,10 @@ template <bool kOdd, bool kForce, bool kConsecutive, class Relax>
     if constexpr (!kOdd) {
 #pragma GCC unroll 19
       for (int q = 0; q < kQ; ++q) f[q] = _mm512_loadu_pd(own + kBatch * q);
+      // All 19 loads first, in order: left to itself the compiler spread them through the
+      // collision, and the memory-bound even steps lost 10-20 % (porous 128^3 box, two threads).
+#pragma GCC unroll 19
+      for (int q = 0; q < kQ; ++q) asm volatile("" : "+v"(f[q]));
     } else {
       // The neighbours' slots of the block kPrefetchAhead blocks ahead: where lines are mostly
       // consecutive, the slot of lane 0 (its cache line holds most of the line); elsewhere every
@@ -322,10 +359,19 @@ inline void collide_one(double f[kQ], const double* force, const Relax& relax) {
 
 template <class Relax>
 inline void relax_one(double g[kQ], const Relax& relax) {
-  double node[kQ];
-  for (int q = 0; q < kQ; ++q) node[q] = g[q];
-  relax(node);
-  for (int q = 0; q < kQ; ++q) g[q] = node[q];
+  double ev[kPairs + 1], od[kPairs + 1];
+  ev[0] = g[0];
+  od[0] = 0;
+  for (int p = 1; p <= kPairs; ++p) {
+    ev[p] = 0.5 * (g[p] + g[p + kPairs]);
+    od[p] = 0.5 * (g[p] - g[p + kPairs]);
+  }
+  relax(ev, od);
+  g[0] = ev[0];
+  for (int p = 1; p <= kPairs; ++p) {
+    g[p] = ev[p] + od[p];
+    g[p + kPairs] = ev[p] - od[p];
+  }
 }
 
 // A CollisionOperator from a relaxation functor; the style files define

@@ -12,14 +12,12 @@ namespace {
 struct TrtRelax {
   double plus, minus;  // s+, s-
   template <class V>
-  [[gnu::always_inline]] void operator()(V (&g)[kQ]) const {
-    const double hp = 0.5 * plus, hm = 0.5 * minus;
-    g[0] *= plus;
+  [[gnu::always_inline]] void operator()(V (&ev)[kPairs + 1], V (&od)[kPairs + 1]) const {
+    ev[0] *= plus;
 #pragma GCC unroll 9
     for (int p = 1; p <= kPairs; ++p) {
-      const V s = g[p] + g[p + kPairs], d = g[p] - g[p + kPairs];
-      g[p] = hp * s + hm * d;
-      g[p + kPairs] = hp * s - hm * d;
+      ev[p] *= plus;
+      od[p] *= minus;
     }
   }
 };
