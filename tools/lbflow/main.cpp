@@ -92,7 +92,9 @@ void declare(cli::Tool& tool, Options& o) {
   tool.add_double(app, "--checkpoint-every", o.checkpoint_every, "seconds between checkpoints (0: every check)",
                   cli::non_negative());
   app.add_option("--resume", o.resume, "continue the run saved in this checkpoint (alone: with its arguments)");
-  app.add_flag("--timings", o.timings, "add seconds and mlups (fluid-node updates per second) to the CSV");
+  app.add_flag("--timings", o.timings,
+               "add seconds and mlups (fluid-node updates per second) to the CSV and to the summary on stderr, "
+               "which it prints even with -q");
   tool.add_common(app, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 }
 
