@@ -11,12 +11,7 @@ struct BgkRelax {
   double omega;
   template <class V>
   [[gnu::always_inline]] void operator()(V (&ev)[kPairs + 1], V (&od)[kPairs + 1]) const {
-    ev[0] *= omega;
-#pragma GCC unroll 9
-    for (int p = 1; p <= kPairs; ++p) {
-      ev[p] *= omega;
-      od[p] *= omega;
-    }
+    kernel::scale_halves(ev, od, omega, omega);
   }
 };
 

@@ -119,6 +119,18 @@ template <bool kForce, class V, class Relax>
   }
 }
 
+// BGK's and TRT's relaxation: the symmetric half scaled by s_even, the antisymmetric one by
+// s_odd.
+template <class V>
+[[gnu::always_inline]] inline void scale_halves(V (&ev)[kPairs + 1], V (&od)[kPairs + 1], double s_even, double s_odd) {
+  ev[0] *= s_even;
+#pragma GCC unroll 9
+  for (int p = 1; p <= kPairs; ++p) {
+    ev[p] *= s_even;
+    od[p] *= s_odd;
+  }
+}
+
 // The same on a batch f[q][b], vectorised across the batch.
 template <int B, bool kForce, class Relax>
 [[gnu::always_inline]] inline void collide_batch(double (&f)[kQ][B], const double* force, const Relax& relax) {

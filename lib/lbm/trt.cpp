@@ -13,12 +13,7 @@ struct TrtRelax {
   double plus, minus;  // s+, s-
   template <class V>
   [[gnu::always_inline]] void operator()(V (&ev)[kPairs + 1], V (&od)[kPairs + 1]) const {
-    ev[0] *= plus;
-#pragma GCC unroll 9
-    for (int p = 1; p <= kPairs; ++p) {
-      ev[p] *= plus;
-      od[p] *= minus;
-    }
+    kernel::scale_halves(ev, od, plus, minus);
   }
 };
 
