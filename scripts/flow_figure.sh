@@ -22,13 +22,7 @@ echo "== shellpack jam -N $n --seeds 1:$count" >&2
 echo "== percolate: $count packings x scales $scales at delta $delta" >&2
 "$build/bin/percolate" "$dir"/jammed/jam_*.xyz --delta "$delta" --scale "$scales" -q --csv "$dir/percolate.csv" \
   -o "$dir/images/c_{name}_{scale}.vtk"
-# The images that percolate (lbflow refuses the others: nothing can flow through them).
-# Rows run packings outermost, then scales in the order given (the {scale} of the file names).
-images=$(awk -F, -v dir="$dir/images" -v scales="$scales" 'BEGIN { ns = split(scales, sc, ",") }
-  /^#/ { next } !h { for (i = 1; i <= NF; ++i) c[$i] = i; h = 1; next }
-  { k = (NR_data++) % ns + 1 }
-  $c["percolates"] == 1 { f = $c["file"]; sub(/.*\//, "", f); sub(/\.xyz$/, "", f); print dir "/c_" f "_" sc[k] ".vtk" }' \
-  "$dir/percolate.csv")
+images=$(scripts/percolating_images.sh "$dir/percolate.csv" "$dir/images" "$scales")
 echo "== lbflow: $(echo "$images" | wc -l) percolating clusters at M = $M" >&2
 # shellcheck disable=SC2086
 "$build/bin/lbflow" $images --refine "$M" --threads 2 -o "$dir/flows.csv"
