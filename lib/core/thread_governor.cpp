@@ -15,12 +15,14 @@ constexpr double kLongestExploitSeconds = 1.0;
 constexpr double kMargin = 1.05;
 // A first epoch shorter than this measures too few iterations to compare.
 constexpr double kShortestFirstSeconds = 0.01;
-// A probe lasts at least one iteration, so where an iteration is long a probe every second
-// costs more than it should: lbflow's thesis-sized lattice steps for ~45 ms, and one step in
-// ~23 on one thread cost ~3 %. A long epoch that follows a confirming probe is therefore also
-// at least this many iterations (a probe at most ~2 % of them); right after a switch the next
-// probe still comes after kFirstExploitSeconds, so a switch a noisy probe misled is undone soon.
-constexpr double kShortestExploitTicks = 50;
+// A probe lasts at least one iteration of the other choice, which may be far longer than the
+// probe's nominal 5 ms: lbflow's thesis-sized lattice steps for ~45 ms, and under load a pair of
+// two-thread steps of a small lattice took 30-35 ms against 6 on one thread. A long epoch that
+// follows a confirming probe therefore lasts at least this many times the probe, so probing
+// costs at most ~2 % (with epochs by time alone, 50 ms to 1 s, such probes took 10-30 % of a
+// loaded run); right after a switch the next probe still comes after kFirstExploitSeconds, so
+// a switch a noisy probe misled is undone soon.
+constexpr double kExploitPerProbe = 50;
 
 // What the last governor learned, for the next one: a run makes thousands of short
 // relaxations, and each starting afresh on all threads (50 ms before its first probe) spent
@@ -47,7 +49,9 @@ ThreadGovernor::ThreadGovernor(int threads) {
   chosen_ = current_ = active_ ? most_ : 1;
   exploit_seconds_ = kFirstExploitSeconds;
   if (!active_) return;
-  double first = kFirstExploitSeconds;
+  // A fresh governor compares soon: under load its first epoch on two threads ran at a fifth of
+  // one thread's speed (lbflow at M = 1: 50 ms of 30 ms steps).
+  double first = kShortestFirstSeconds;
   {
     std::lock_guard lock(memory_mutex);
     if (memory.most == most_) {
@@ -101,7 +105,7 @@ void ThreadGovernor::tick() {
     ++switches_;
     exploit_seconds_ = kFirstExploitSeconds;  // soon checked again: a noisy probe may have misled
   } else {
-    exploit_seconds_ = std::max(std::min(2 * exploit_seconds_, kLongestExploitSeconds), kShortestExploitTicks / rate_current_);
+    exploit_seconds_ = std::max(std::min(2 * exploit_seconds_, kLongestExploitSeconds), kExploitPerProbe * elapsed);
   }
   start_epoch(chosen_, exploit_seconds_);
 }

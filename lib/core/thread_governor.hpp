@@ -7,8 +7,9 @@
 // governor may switch at any iteration.
 //
 // It alternates short probe epochs (about 5 ms) of the other choice with long epochs of the
-// faster one (growing from 50 ms to about 1 s while the choice holds, and then never fewer
-// than 50 iterations), so a wrong guess costs a few per cent at most. The choice carries over
+// faster one (growing from 50 ms to about 1 s while the choice holds, and never shorter than
+// 50 times the probe before it, which lasts at least one iteration of the other choice), so a
+// wrong guess costs a few per cent at most; a fresh governor's first epoch is 10 ms. The choice carries over
 // from one governor to the next in the process (a run makes many short relaxations), as does
 // the time the next probe is due.
 #include <chrono>

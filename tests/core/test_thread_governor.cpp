@@ -55,6 +55,35 @@ TEST_CASE("thread governor: long iterations are probed rarely") {
   CHECK(probes <= 2);
 }
 
+TEST_CASE("thread governor: probes of a choice whose iterations are long under load are rare") {
+  // lbflow at M = 1 with another process on one core: a pair of steps took ~6 ms on one thread
+  // and 30-35 ms on two, so each probe of two threads cost a 30 ms iteration. With epochs by
+  // time alone (50 ms to 1 s) such probes took 4.5 % of this 2 s run; at least 50 probe
+  // lengths per long epoch keep them at 1.5 %.
+  omp_set_num_threads(2);
+  cmp::ThreadGovernor::forget();
+  {
+    cmp::ThreadGovernor g(2);
+    REQUIRE(settle(g, 2, 0.4) == 1);
+  }
+  cmp::ThreadGovernor g(2);
+  using namespace std::chrono;
+  const auto start = steady_clock::now();
+  const auto end = start + duration<double>(2.0);
+  double on_two = 0;
+  while (steady_clock::now() < end) {
+    const bool two = omp_get_max_threads() == 2;
+    const auto t0 = steady_clock::now();
+    std::this_thread::sleep_for(microseconds(two ? 30000 : 1000));
+    g.tick();
+    if (two) on_two += duration<double>(steady_clock::now() - t0).count();
+  }
+  const double share = on_two / duration<double>(steady_clock::now() - start).count();
+  INFO("share of the run on two threads: " << share);
+  CHECK(g.threads() == 1);
+  CHECK(share < 0.03);
+}
+
 TEST_CASE("thread governor: inert for one thread and inside a parallel region") {
   omp_set_num_threads(2);
   cmp::ThreadGovernor one(1);
