@@ -42,7 +42,7 @@ typedef double Lanes __attribute__((vector_size(kBatch * sizeof(double))));
 // one, so the non-equilibrium's halves ev = (g_p + g_p+9)/2 and od = (g_p - g_p+9)/2 (what the
 // relaxation works on) come from the pair's sum and difference directly (written direction by
 // direction, the equilibrium, the split and the recombination took 40 % more floating-point
-// operations; the odd step, which cannot hide them behind memory, spends a third of its time
+// operations; the odd step, which cannot hide them behind memory, spent a third of its time
 // here). f_again, when given, holds f unchanged in memory (f[q] at f_again + q * lanes, lanes =
 // 1 for double, kBatch for Lanes, any alignment): f is read from it again after the relaxation
 // instead of being kept in registers through it (the forced collision holds f, g, s and the
