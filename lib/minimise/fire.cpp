@@ -22,6 +22,7 @@ void FireParameters::validate() const {
   require(f_alpha > 0 && f_alpha <= 1, "f_alpha must lie in (0, 1]");
   require(f_inc >= 1, "f_inc must be at least 1");
   require(f_dec > 0 && f_dec < 1, "f_dec must lie in (0, 1)");
+  require(divergence_factor == 0 || divergence_factor > 1, "divergence_factor must be 0 (off) or above 1");
   require(mass > 0, "mass must be positive");
   require(force_tolerance >= 0, "force tolerance must not be negative");
   require(parallel_size >= 0, "parallel_size must not be negative");
@@ -57,7 +58,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   Eigen::VectorXd f(n), v = Eigen::VectorXd::Zero(n);
   forces(x, f);
   result.force_evaluations = 1;
-  double dt = p.dt, alpha = p.alpha_start;
+  double dt = p.dt, alpha = p.alpha_start, dt_max = p.dt_max;
   long last_cut = 0;
   const double inverse_mass = 1.0 / p.mass;
   // The velocity update before each drift, v <- keep v + (mix + dt/2m) f: the FIRE mixing of
@@ -90,6 +91,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       result.stop = FireStop::Interrupted;
       return result;
     }
+    const double force_before = result.max_force;
     // Mixing (previous step) and half kick, then drift.
     const double kick = 0.5 * dt * inverse_mass;
     const double cf = mix + kick;
@@ -130,12 +132,18 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       worst = std::isnan(sums[c][3]) || std::isnan(worst) ? std::nan("") : std::max(worst, sums[c][3]);
     }
     result.max_force = std::sqrt(worst);
+    const bool ringing = p.divergence_factor > 0 && force_before > 0 &&
+                         result.max_force > p.divergence_factor * force_before;
+    if (ringing) {
+      ++result.divergence_restarts;
+      dt_max = std::min(dt_max, 0.5 * dt);
+    }
     // FIRE: turn v towards F (applied in the next pass), adapt dt and alpha.
     keep = 1 - alpha;
     mix = ff > 0 ? alpha * std::sqrt(vv / ff) : 0.0;
-    if (power > 0) {
+    if (power > 0 && !ringing) {
       if (it - last_cut > p.n_min) {
-        dt = std::min(dt * p.f_inc, p.dt_max);
+        dt = std::min(dt * p.f_inc, dt_max);
         alpha *= p.f_alpha;
       }
     } else {

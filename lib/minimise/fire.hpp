@@ -42,6 +42,11 @@ struct FireParameters {
   // chunks in order on one: same bits). kParallelFireSize suits forces as cheap as spheres';
   // a caller whose own force passes stay on one thread up to a larger size passes that size.
   long parallel_size = kParallelFireSize;
+  // A step that multiplies max |f_i| by more than this is a local instability that the global
+  // power P misses (a few vertices ringing beyond their stability limit while the rest of the
+  // system still flows downhill): restart from rest as for P <= 0 and keep dt below half the
+  // step that rang for the rest of the run. 0 turns the guard off.
+  double divergence_factor = 4.0;
 
   // Throws cmp::UsageError naming the first bad field (non-positive steps, f_dec >= 1, ...).
   void validate() const;
@@ -55,6 +60,7 @@ struct FireResult {
   long iterations = 0;        // velocity Verlet steps (force evaluations after the first)
   long force_evaluations = 0;
   double max_force = 0;       // max_i |f_i| at the end
+  long divergence_restarts = 0;  // restarts by FireParameters::divergence_factor
   bool converged() const { return stop == FireStop::ForceTolerance; }
 };
 

@@ -14,8 +14,9 @@ cli_tool=shellpack
 source "$(dirname "${BASH_SOURCE[0]}")/../support/compress_start.sh"
 enter_scratch_dir
 
-# Coarse steps and a looser force tolerance keep each run to seconds.
-compress() { "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 -q "$@"; }
+# Coarse steps and a looser force tolerance keep each run to seconds; the vertex spheres (R_v =
+# 0.75 x the circumradius on 162 vertices) take such steps, the default face barrier (t) not.
+compress() { "$shellpack" compress jammed.xyz --mesh cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 -q "$@"; }
 # bad_start PACKING MESH PATTERN: the run is refused before any work, exit 2.
 bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0.7 -o out.off; }
 
@@ -127,9 +128,9 @@ case_same_bytes_on_1_and_2_threads() {
 case_resume_writes_the_same_bytes() {
   make_start
   mkdir -p whole parts
-  (cd whole && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
+  (cd whole && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
     -o 'p_{phi}.off' --checkpoint run.chk >c.csv) || fail "uninterrupted run"
-  (cd parts && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
+  (cd parts && "$shellpack" compress ../jammed.xyz --mesh ../cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
     -o 'p_{phi}.off' --checkpoint run.chk --stop-after-steps 1 >first.csv) || fail "first part"
   [ -s parts/run.chk ] || fail "no checkpoint after --stop-after-steps"
   [ -e parts/p_0.44.off ] && [ ! -e parts/p_0.45.off ] || fail "the first part should stop between the targets"
@@ -217,10 +218,19 @@ case_bad_resume() {
 }
 case_progress_on_a_terminal() {
   make_start
-  on_terminal term.txt "$shellpack" compress jammed.xyz --mesh cell.off --step 0.1 --ftol 1e-4 --phi 0.45 --csv c.csv ||
+  on_terminal term.txt "$shellpack" compress jammed.xyz --mesh cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 --phi 0.45 --csv c.csv ||
     fail "run on a terminal"
   grep -q "compressing" term.txt || fail "no progress bar: $(cat term.txt)"
   grep -q "phi 0\.[0-9]*, step [0-9]*, residual" term.txt || fail "no phi/step/residual note: $(cat term.txt)"
+}
+
+# The default contact law is the face barrier, the one that holds towards confluence.
+case_default_contact_is_faces() {
+  make_start
+  "$shellpack" compress --help | grep -q -- "--contact TEXT=hertz-faces" || fail "help: $("$shellpack" compress --help | grep -- --contact)"
+  "$shellpack" compress jammed.xyz --mesh cell.off --step 0.02 --ftol 1e-4 -q --phi 0.62 -o d.off >d.csv || fail "defaults"
+  grep -q "^# contact=hertz-faces$" d.csv || fail "CSV: $(grep contact d.csv)"
+  grep -q "^# contact=hertz-faces$" d.off || fail "packing: $(grep contact d.off)"
 }
 
 run_cases "$@"
