@@ -101,6 +101,25 @@ flow-figure: deps all
 run: deps all
 	@scripts/demo.sh $(BUILD) $(OUT)/demo
 
+# The thesis's study (Chapters 4-5) as a resumable campaign of files (scripts/study/study.mk):
+# STUDY=default|thesis|demo|tiny picks the sizes, and N, SEEDS, VERTICES, PHI, DELTA, FLOW_DELTA,
+# REFINE, FLOW_N, FLOW_SEEDS override them; RUN prefixes every recipe (srun on Slurm). Writes
+# STUDY_DIR (out/study, out/study-<STUDY>) and its report.html. -j runs tasks in parallel.
+STUDY_TOOLS := rndmesh shellpack percolate lbflow kcfit
+STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
+.PHONY: study study-report study-jobs study-tools
+study-tools: deps configure
+	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS)
+study: study-tools
+	@$(STUDY_MAKE) all
+# The report from whatever has finished (tables, fits, figures; the rest says what is missing).
+study-report: study-tools
+	@$(STUDY_MAKE) report
+# One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel
+# or a Slurm job array; run the stages in that order, each after the one before has finished.
+study-jobs: study-tools
+	@$(STUDY_MAKE) jobs
+
 # Programs into $(DESTDIR)$(PREFIX)/bin, man pages made from their --help into share/man/man1.
 install: all
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)

@@ -1,0 +1,18 @@
+# STUDY=thesis: the thesis's sizes (Chapter 5, 5.2.1-5.2.3): N = 16, 32 and 50 shells of 2,562
+# vertices (~5,000 triangles), t/D0 = 0.02, P0/E = 0.0025, constant volume, SVK membrane (the
+# compress defaults); phi from 0.60 to 0.95 (porosity 0.40 to 0.05, past the threshold near
+# 0.14); delta = 0.03-0.07 D0; the flow at delta = 0.04 for M = 1, 2, 3 on N = 50. The thesis
+# averaged 50 simulations per N (Ch. 4) and does not say how many packings fed each
+# percolation probability: 20 seeds per N here, the flow on the first 5 seeds of N = 50. A
+# compression of 50 x 2,562 shells takes about an hour and a half on 2 cores: hours here,
+# minutes per task on a cluster (RUN='srun ...').
+N          ?= 16 32 50
+SEEDS      ?= 1:20
+VERTICES   ?= 2562
+PHI        ?= 0.60:0.95:0.025
+DELTA      ?= 0.03:0.07:0.01
+FLOW_DELTA ?= 0.04
+REFINE     ?= 1,2,3
+FLOW_N     ?= 50
+FLOW_SEEDS ?= 1:5
+COMPRESS_OPTS ?=

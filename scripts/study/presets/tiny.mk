@@ -1,0 +1,12 @@
+# STUDY=tiny: the campaign at the smallest size that exercises every stage (tests/tools/study.sh):
+# 10 shells of 162 vertices, 2 seeds, two volume fractions, two voxel sizes, M = 1. Seconds.
+N          ?= 10
+SEEDS      ?= 1:2
+VERTICES   ?= 162
+PHI        ?= 0.7,0.8
+DELTA      ?= 0.1,0.125
+FLOW_DELTA ?= 0.1
+REFINE     ?= 1
+FLOW_N     ?= $(N)
+FLOW_SEEDS ?= $(SEEDS)
+COMPRESS_OPTS ?= --ftol 1e-4

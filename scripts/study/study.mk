@@ -1,0 +1,164 @@
+# The thesis's study (Chapters 4 and 5) as a campaign of files, one target per unit of work:
+#
+#   mesh/cell_<V>.off                      rndmesh icosa            a mesh of V vertices
+#   jam/N<N>_s<S>.xyz                      shellpack jam            a jammed packing per (N, seed)
+#   compress/N<N>_s<S>/compress.csv        shellpack compress       the compression, with pack_<phi>.off
+#   analyze/N<N>_s<S>.csv                  shellpack analyze        Chapter 4's structure of every pack
+#   perc/N<N>_s<S>/d<delta>/<phi>.csv      percolate                one row (and the cluster at FLOW_DELTA)
+#   flow/N<N>_s<S>/M<M>/<phi>.csv          lbflow                   one row per percolating cluster
+#   tables/*.csv, fits/*.csv, report.html  study_tables.py, kcfit, study_report.py
+#
+# Run it through the top Makefile (make study, make study-report, make study-jobs). Every recipe
+# is a plain call of the toolkit's programs behind $(RUN) (empty here, `srun ...` on Slurm);
+# the programs write atomically, so a killed campaign leaves no half file and `make` picks up
+# where it stopped; a compression killed half-way resumes from its checkpoint. The flow stage's
+# targets depend on which clusters percolate, so the campaign runs in three passes
+# (structure, flow, report), each a sub-make that reads the results of the one before.
+
+STUDY ?= default
+include scripts/study/presets/$(STUDY).mk
+
+OUT       ?= out
+STUDY_DIR ?= $(OUT)/study$(if $(filter default,$(STUDY)),,-$(STUDY))
+BUILD     ?= build
+THREADS   ?= 0
+RUN       ?=
+PYTHON    ?= /usr/bin/python3
+D := $(STUDY_DIR)
+BIN := $(D)/bin
+TIMED := scripts/study/timed.sh $(D)/log
+
+range = $(shell scripts/study/range.sh '$(1)')
+N_LIST      := $(strip $(N))
+SEED_LIST   := $(call range,$(SEEDS))
+PHI_LIST    := $(call range,$(PHI))
+DELTA_LIST  := $(call range,$(DELTA))
+REFINE_LIST := $(call range,$(REFINE))
+FLOW_N_LIST := $(strip $(FLOW_N))
+FLOW_SEED_LIST := $(call range,$(FLOW_SEEDS))
+
+# Every campaign variable is checked before any work: one line each, then stop.
+CHECK := $(shell scripts/study/check_variables.sh 'N=$(N)' 'SEEDS=$(SEEDS)' 'VERTICES=$(VERTICES)' \
+  'PHI=$(PHI)' 'DELTA=$(DELTA)' 'FLOW_DELTA=$(FLOW_DELTA)' 'REFINE=$(REFINE)' 'FLOW_N=$(FLOW_N)' \
+  'FLOW_SEEDS=$(FLOW_SEEDS)' 'THREADS=$(THREADS)' 1>&2; echo $$?)
+ifneq ($(CHECK),0)
+  $(error the campaign's variables above are out of range (STUDY=$(STUDY)); nothing was run)
+endif
+
+runs      := $(foreach n,$(N_LIST),$(foreach s,$(SEED_LIST),N$(n)_s$(s)))
+flow_runs := $(foreach n,$(FLOW_N_LIST),$(foreach s,$(FLOW_SEED_LIST),N$(n)_s$(s)))
+MESH      := $(D)/mesh/cell_$(VERTICES).off
+COMPRESSIONS := $(foreach r,$(runs),$(D)/compress/$(r)/compress.csv)
+ANALYSES  := $(foreach r,$(runs),$(D)/analyze/$(r).csv)
+PERC_ROWS := $(foreach r,$(runs),$(foreach d,$(DELTA_LIST),$(foreach p,$(PHI_LIST),$(D)/perc/$(r)/d$(d)/$(p).csv)))
+
+# Parameters that no file name carries: a target that depends on them is remade when they change.
+# (the stamp is rewritten only when its text changes, so an unchanged campaign stays made)
+define stamp
+$(shell mkdir -p $(D)/params; f=$(D)/params/$(1).txt; printf '%s\n' $(2) > $$f.new; \
+  if cmp -s $$f.new $$f; then rm $$f.new; else mv $$f.new $$f; fi)
+endef
+$(call stamp,compress,'VERTICES=$(VERTICES)' 'COMPRESS_OPTS=$(COMPRESS_OPTS)' 'PHI=$(PHI_LIST)')
+$(call stamp,percolate,'PERCOLATE_OPTS=$(PERCOLATE_OPTS)' 'FLOW_DELTA=$(FLOW_DELTA)')
+$(call stamp,flow,'LBFLOW_OPTS=$(LBFLOW_OPTS)')
+$(call stamp,jam,'JAM_OPTS=$(JAM_OPTS)')
+
+.DELETE_ON_ERROR:
+.SECONDARY:
+.SECONDEXPANSION:
+.PHONY: all structure flow report jobs tools
+
+all:
+	@$(MAKE) -f scripts/study/study.mk --no-print-directory structure
+	@$(MAKE) -f scripts/study/study.mk --no-print-directory flow
+	@$(MAKE) -f scripts/study/study.mk --no-print-directory report
+
+# The campaign runs the programs it copied here at its start, so that one campaign is one version
+# of the tools even when the checkout is rebuilt while it runs (make study-clean-tools to renew).
+TOOLS := rndmesh shellpack percolate lbflow kcfit
+$(BIN)/%: | $(BUILD)/bin/%
+	@mkdir -p $(BIN)
+	cp $(BUILD)/bin/$* $@
+tools: $(addprefix $(BIN)/,$(TOOLS))
+
+structure: $(ANALYSES) $(PERC_ROWS)
+
+$(MESH): | $(BIN)/rndmesh
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) mesh $@ $(BIN)/rndmesh icosa --level $(icosa_level) --radius 0.5 -q -o $@
+
+# icosahedron quadrisected: level 1 has 12 vertices, each level about four times more
+icosa_level = $(or $(word 2,$(subst :, ,$(filter $(VERTICES):%,12:1 42:2 162:3 642:4 2562:5 10242:6))),1)
+
+$(D)/jam/%.xyz: $(D)/params/jam.txt | $(BIN)/shellpack
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) jam $@ $(BIN)/shellpack jam -N $(call n_of,$*) --seed $(call seed_of,$*) $(JAM_OPTS) \
+	  -q -o $@ --csv /dev/null
+
+n_of    = $(patsubst N%,%,$(word 1,$(subst _, ,$(1))))
+seed_of = $(patsubst s%,%,$(word 2,$(subst _, ,$(1))))
+
+# One compression per (N, seed); pack_<phi>.off at every target. With a checkpoint left by a
+# killed run it resumes (the checkpoint repeats the run's arguments).
+$(D)/compress/%/compress.csv: $(D)/jam/%.xyz $(MESH) $(D)/params/compress.txt | $(BIN)/shellpack
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) compress $@ scripts/study/compress.sh $(BIN)/shellpack $(@D) $< $(MESH) '$(PHI_LIST)' \
+	  $(THREADS) $(D)/params/compress.txt $(COMPRESS_OPTS)
+
+
+$(D)/analyze/%.csv: $(D)/compress/%/compress.csv | $(BIN)/shellpack
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) analyze $@ $(BIN)/shellpack analyze $(foreach p,$(PHI_LIST),$(D)/compress/$*/pack_$(p).off) \
+	  --threads $(THREADS) -q -o $@
+
+# One percolate row per (packing, delta); the cluster image is kept at FLOW_DELTA only.
+# (a packing is finished when its compression's table is: the table is written last)
+$(D)/perc/%.csv: $$(D)/compress/$$(call run_of,$$*)/compress.csv $(D)/params/percolate.txt | $(BIN)/percolate
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) percolate $@ $(BIN)/percolate $(<D)/pack_$(notdir $*).off --delta $(call delta_of,$*) $(PERCOLATE_OPTS) --threads $(THREADS) -q \
+	  --csv $@ $(if $(filter $(call delta_of,$*),$(FLOW_DELTA)),-o $(@:.csv=.vtk))
+
+run_of   = $(word 1,$(subst /, ,$(1)))
+delta_of = $(patsubst d%,%,$(word 2,$(subst /, ,$(1))))
+
+# The second pass: one lbflow row per percolating cluster at FLOW_DELTA, for FLOW_N and FLOW_SEEDS.
+ifneq ($(filter flow stage-flow,$(MAKECMDGOALS)),)
+FLOW_ROWS := $(foreach r,$(flow_runs),$(foreach m,$(REFINE_LIST),$(foreach p,$(shell scripts/study/percolating.sh \
+  $(D)/perc/$(r)/d$(FLOW_DELTA) $(PHI_LIST)),$(D)/flow/$(r)/M$(m)/$(p).csv)))
+endif
+flow: $(FLOW_ROWS)
+
+$(D)/flow/%.csv: $$(D)/perc/$$(call run_of,$$*)/d$(FLOW_DELTA)/$$(notdir $$*).vtk $(D)/params/flow.txt | $(BIN)/lbflow
+	@mkdir -p $(@D)
+	$(RUN) $(TIMED) flow $@ scripts/study/flow.sh $(BIN)/lbflow $< $(patsubst M%,%,$(word 2,$(subst /, ,$*))) $@ \
+	  $(THREADS) $(D)/params/flow.txt $(LBFLOW_OPTS)
+
+$(D)/perc/%.vtk: $(D)/perc/%.csv ; @test -f $@
+
+# The third pass: tables (one per stage, rows of every finished target), fits and the report.
+report: | $(BIN)/kcfit
+	$(PYTHON) scripts/study/study_report.py --dir $(D) --study $(STUDY) --bin $(BIN) \
+	  --params 'N=$(N)' 'SEEDS=$(SEEDS)' 'VERTICES=$(VERTICES)' 'PHI=$(PHI)' 'DELTA=$(DELTA)' \
+	  'FLOW_DELTA=$(FLOW_DELTA)' 'REFINE=$(REFINE)' 'FLOW_N=$(FLOW_N)' 'FLOW_SEEDS=$(FLOW_SEEDS)' \
+	  'COMPRESS_OPTS=$(COMPRESS_OPTS)' 'PERCOLATE_OPTS=$(PERCOLATE_OPTS)' 'LBFLOW_OPTS=$(LBFLOW_OPTS)'
+
+# One stage's commands, one a line, for GNU parallel or a job array (make study-jobs STAGE=...):
+# the recipes of the stage's unfinished targets, printed instead of run. A stage's jobs need the
+# stage before it finished (jam, then compress, then analyze and percolate, then flow).
+STAGE ?= compress
+STAGES := jam compress analyze percolate flow
+stage_before_compress := jam
+stage_before_analyze := compress
+stage_before_percolate := compress
+stage_before_flow := percolate
+.PHONY: $(addprefix stage-,$(STAGES))
+stage-jam: $(MESH) $(foreach r,$(runs),$(D)/jam/$(r).xyz)
+stage-compress: $(COMPRESSIONS)
+stage-analyze: $(ANALYSES)
+stage-percolate: $(PERC_ROWS)
+stage-flow: $(FLOW_ROWS)
+jobs:
+	@$(if $(filter $(STAGE),$(STAGES)),,echo "study: STAGE=$(STAGE): the stages are $(STAGES)" >&2; exit 2)
+	@$(if $(stage_before_$(STAGE)),$(MAKE) -f scripts/study/study.mk -q stage-$(stage_before_$(STAGE)) || \
+	  { echo "study: STAGE=$(STAGE) needs stage $(stage_before_$(STAGE)) finished first" >&2; exit 2; })
+	@$(MAKE) -f scripts/study/study.mk --no-print-directory -s RUN=scripts/study/print_command.sh stage-$(STAGE)

@@ -1,0 +1,159 @@
+#!/usr/bin/env bash
+# The study campaign (scripts/study/study.mk) at its tiny size, as `make study` runs it: the
+# hand-offs between the stages (compress -> percolate -> lbflow -> kcfit), a campaign killed
+# half-way and run again, the variables checked before any work, a failed step retried, the
+# jobs printed for GNU parallel, and a report that refuses results of another version.
+#   bash study.sh --list | CASE     (needs CMP_BIN, CMP_SRC)
+set -uo pipefail
+cases="handoffs kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused"
+if [[ ${1:-} == --list ]]; then printf '%s\n' $cases; exit 0; fi
+case=${1:?CASE}
+bin=${CMP_BIN:?set CMP_BIN}
+src=${CMP_SRC:?set CMP_SRC}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+export OMP_NUM_THREADS=1
+campaign() { make -C "$src" -f scripts/study/study.mk --no-print-directory STUDY=tiny STUDY_DIR="$1" \
+  BUILD="$(dirname "$bin")" THREADS=1 "${@:2}"; }
+rows() { grep -v '^#' "$1" | tail -n +2 | wc -l; }
+
+case_handoffs() {
+  campaign "$tmp/st" -j2 all >"$tmp/log" 2>&1 || fail "campaign: $(tail -20 "$tmp/log")"
+  [ -s "$tmp/st/report.html" ] || fail "no report"
+  for f in fig5_2bc fig5_2d fig5_3 fig5_4 fig5_5 ch4_structure; do
+    [ -s "$tmp/st/figures/$f.png" ] || fail "no figure $f"
+  done
+  /usr/bin/python3 - "$tmp/st" <<'PY' || fail "hand-offs"
+import csv, glob, math, os, sys
+d = sys.argv[1]
+def rows(p):
+    return list(csv.DictReader(l for l in open(p) if not l.startswith("#")))
+def meta(p):
+    return dict(l[1:].strip().split("=", 1) for l in open(p) if l.startswith("#") and "=" in l)
+perc = rows(f"{d}/tables/percolate.csv")
+flow = rows(f"{d}/tables/flow.csv")
+assert perc and flow, "empty tables"
+checked = 0
+for r in perc:
+    comp = {float(c["phi"]): c for c in rows(f"{d}/compress/{r['run']}/compress.csv")}
+    phi = float(r["phi_target"])
+    # percolate's porosity of the packing is 1 - sum V_shell / V_box of compress's output: the
+    # shells are within compress's 0.1 % volume band of V0, phi = sum V0 / L^3
+    assert abs(float(r["porosity"]) - (1 - phi)) <= 1.5e-3 * phi, (r["porosity"], phi)
+    # the voxels: the percolating cluster holds only voxels that no triangle touches, outside every
+    # shell, so its volume lies below the porosity, by at most a layer of sqrt(3) delta over the
+    # shells' area (spheres of D0 as the bound's area) plus the pockets it does not reach
+    n, delta = int(r["particles"]), float(r["delta"])
+    layer = n * math.pi * math.sqrt(3) * delta / (n * math.pi / 6 / phi)
+    cf = float(r["cluster_fraction"])
+    assert cf <= float(r["porosity"]) + 1e-12, (cf, r["porosity"])
+    assert r["percolates"] == "0" or cf >= float(r["porosity"]) - layer - 0.1, (cf, r["porosity"], layer)
+    checked += 1
+for f in flow:
+    p = [r for r in perc if r["run"] == f["run"] and r["phi_target"] == f["phi_target"]
+         and abs(float(r["delta"]) - float(f["delta"])) < 1e-12]
+    assert len(p) == 1, f
+    p = p[0]
+    # lbflow read exactly the cluster percolate wrote: the same grid and the same fluid voxels
+    assert (f["nx"], f["ny"], f["nz"]) == (p["nx"], p["ny"], p["nz"]), (f, p)
+    assert int(f["fluid_nodes"]) == int(p["cluster_voxels"]) * int(f["refine"]) ** 3, (f["fluid_nodes"], p["cluster_voxels"])
+    assert abs(float(f["porosity"]) - float(p["porosity"])) < 1e-12
+# every percolating cluster at FLOW_DELTA went through lbflow, and no other
+perc_flow = [r for r in perc if r["percolates"] == "1" and abs(float(r["delta"]) - 0.1) < 1e-12]
+assert len(perc_flow) == len(flow), (len(perc_flow), len(flow))
+# the fits used every point they were given: kcfit's n is the table's count
+fit = meta(f"{d}/fits/tortuosity_M1.csv")
+assert int(fit["n"]) == len(flow), (fit["n"], len(flow))
+sig = meta(f"{d}/fits/hydraulic_radius.csv")
+assert int(sig["n"]) == len(perc_flow), (sig["n"], len(perc_flow))
+print(f"{checked} percolate rows, {len(flow)} flows checked")
+PY
+}
+
+case_kill_and_resume() {
+  campaign "$tmp/st" all >"$tmp/log" 2>&1 || fail "uninterrupted: $(tail -20 "$tmp/log")"
+  mkdir "$tmp/whole" && cp "$tmp"/st/tables/*.csv "$tmp/whole/" || fail "tables"
+  total=$(wc -l <"$tmp/st/log/recipes.log")
+  rm -rf "$tmp/st"
+  # make itself in the background (not a shell around it), as a user's `kill` finds it
+  ( exec make -C "$src" -f scripts/study/study.mk --no-print-directory STUDY=tiny STUDY_DIR="$tmp/st" \
+      BUILD="$(dirname "$bin")" THREADS=1 all >"$tmp/log1" 2>&1 ) &
+  pid=$!
+  for _ in $(seq 600); do [ -s "$tmp/st/log/compress.csv" ] && break; sleep 0.1; done
+  [ -s "$tmp/st/log/compress.csv" ] || fail "no compression finished in 60 s"
+  kill -TERM "$pid"
+  wait "$pid" && fail "make should stop on SIGTERM"
+  sleep 0.5
+  pgrep -f "$tmp/st/bin/" >/dev/null && fail "a program of the campaign outlived make: $(pgrep -af "$tmp/st/bin/")"
+  [ -s "$tmp/st/report.html" ] && fail "the killed campaign should not have reached its report"
+  done_before=$(cut -d, -f2 "$tmp"/st/log/*.csv | sort -u)
+  started_before=$(wc -l <"$tmp/st/log/recipes.log")
+  campaign "$tmp/st" all >"$tmp/log2" 2>&1 || fail "rerun: $(tail -20 "$tmp/log2")"
+  for f in "$tmp"/whole/*.csv; do
+    cmp -s "$f" "$tmp/st/tables/$(basename "$f")" || fail "$(basename "$f") differs after the resume: $(diff "$f" "$tmp/st/tables/$(basename "$f")" | head -5)"
+  done
+  rerun=$(tail -n +$((started_before + 1)) "$tmp/st/log/recipes.log" | cut -d' ' -f2)
+  for t in $done_before; do
+    grep -qx "$t" <<<"$rerun" && fail "$t was finished before the kill and made again"
+  done
+  n_rerun=$(wc -l <<<"$rerun")
+  n_done=$(wc -w <<<"$done_before")
+  [ "$n_rerun" -le $((total - n_done)) ] || fail "the rerun ran $n_rerun recipes, the campaign has $total, $n_done were done"
+  echo "killed after $n_done finished recipes; the rerun ran $n_rerun of $total"
+}
+
+case_bad_variables() {
+  campaign "$tmp/st" all N='16 3' DELTA=0 REFINE=0 PHI=0.9:0.8:0.1 >"$tmp/out" 2>&1 && fail "bad variables accepted"
+  for want in "study: N: '3' is not a shell count" "study: DELTA: '0' must lie in" "study: REFINE: '0' is not a refinement" \
+      "study: PHI: '0.9:0.8:0.1' is an empty range"; do
+    grep -q "$want" "$tmp/out" || fail "no line '$want': $(cat "$tmp/out")"
+  done
+  [ "$(grep -c '^study:' "$tmp/out")" = 4 ] || fail "one line per problem: $(cat "$tmp/out")"
+  [ -e "$tmp/st" ] && fail "work started: $(ls -R "$tmp/st" | head)"
+  return 0
+}
+
+case_failed_step_retried() {
+  campaign "$tmp/st" stage-compress COMPRESS_OPTS='--ftol 1e-4 --fire-max-iterations 3' >"$tmp/out" 2>&1 &&
+    fail "a capped relaxation should fail the step"
+  ls "$tmp"/st/compress/N10_s*/compress.csv 2>/dev/null && fail "a failed compression left its table"
+  campaign "$tmp/st" stage-compress >"$tmp/out2" 2>&1 || fail "retry: $(tail -5 "$tmp/out2")"
+  for s in 1 2; do
+    [ -s "$tmp/st/compress/N10_s$s/compress.csv" ] || fail "seed $s not retried"
+    [ -e "$tmp/st/compress/N10_s$s/run.ckpt" ] && fail "a finished compression left its checkpoint"
+    grep -q -- "--fire-max-iterations 3" "$tmp/st/compress/N10_s$s/compress.csv" && fail "retried with the old arguments"
+  done
+  return 0
+}
+
+case_jobs_for_parallel() {
+  command -v parallel >/dev/null || fail "GNU parallel is not installed (make deps installs it)"
+  campaign "$tmp/st" jobs STAGE=compress >"$tmp/out" 2>&1 && fail "compress jobs before the jams"
+  grep -q "STAGE=compress needs stage jam finished first" "$tmp/out" || fail "$(cat "$tmp/out")"
+  for stage in jam compress analyze percolate flow; do
+    campaign "$tmp/st" jobs STAGE=$stage >"$tmp/$stage.txt" 2>"$tmp/err" || fail "jobs $stage: $(cat "$tmp/err")"
+    [ -s "$tmp/$stage.txt" ] || fail "no $stage jobs"
+    (cd "$src" && parallel -j2 <"$tmp/$stage.txt") >/dev/null 2>&1 || fail "parallel $stage"
+  done
+  [ "$(wc -l <"$tmp/compress.txt")" = 2 ] || fail "one compress job per (N, seed): $(cat "$tmp/compress.txt")"
+  [ "$(wc -l <"$tmp/percolate.txt")" = 8 ] || fail "one percolate job per (packing, delta): $(wc -l <"$tmp/percolate.txt")"
+  before=$(wc -l <"$tmp/st/log/recipes.log")
+  campaign "$tmp/st" all >"$tmp/out" 2>&1 || fail "report after parallel: $(tail -5 "$tmp/out")"
+  [ "$(wc -l <"$tmp/st/log/recipes.log")" = "$before" ] || fail "make redid what parallel had done: $(tail -n +$((before + 1)) "$tmp/st/log/recipes.log")"
+  [ -s "$tmp/st/report.html" ] || fail "no report"
+}
+
+case_mixed_versions_refused() {
+  campaign "$tmp/st" structure >"$tmp/out" 2>&1 || fail "campaign: $(tail -5 "$tmp/out")"
+  f="$tmp/st/perc/N10_s2/d0.1/0.8.csv"
+  sed -i 's/^# provenance=percolate [^:]*:/# provenance=percolate 0.0.9-old:/' "$f"
+  campaign "$tmp/st" report >"$tmp/out" 2>&1 && fail "a report mixing versions"
+  grep -q "percolate: made by 2 versions of the program" "$tmp/out" || fail "$(cat "$tmp/out")"
+  grep -q "0.0.9-old (1 files, e.g. $f)" "$tmp/out" || fail "the odd file is not named: $(cat "$tmp/out")"
+  [ -e "$tmp/st/report.html" ] && fail "a report was written"
+  ALLOW_MIXED=1 campaign "$tmp/st" report >"$tmp/out" 2>&1 || fail "ALLOW_MIXED: $(tail -5 "$tmp/out")"
+  grep -q "Mixed campaign" "$tmp/st/report.html" || fail "the report does not say it is mixed"
+}
+
+"case_$case"
