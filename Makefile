@@ -8,7 +8,8 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
-  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9
+  help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9 \
+  python3-matplotlib parallel xvfb xauth
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
 BENCH_PACKAGES := libplb-dev libopenmpi-dev
 
@@ -97,8 +98,11 @@ jam2d-figures: deps all
 flow-figure: deps all
 	@scripts/flow_figure.sh $(BUILD) $(OUT)/figures
 
-# The demo pipeline (scripts/demo.sh): every tool that exists so far, outputs in $(OUT)/demo/.
-run: deps all
+# The demo pipeline (scripts/demo.sh): every tool chained, then the study at toy size and its
+# report; outputs in $(OUT)/demo/. Builds the programs only, not the tests.
+DEMO_TOOLS := rndmesh shellpack percolate lbflow kcfit jam2d
+run: deps configure
+	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TOOLS)
 	@scripts/demo.sh $(BUILD) $(OUT)/demo
 
 # The thesis's study (Chapters 4-5) as a resumable campaign of files (scripts/study/study.mk):

@@ -276,6 +276,12 @@ class Report:
         self.save(fig, "fig5_4", f"Tortuosity of the flow through the percolating cluster (N = {n}, "
                   f"δ = {self.a.flow_delta} D₀) for each refinement M, with τ_H = C_τ(φ − φ_c)^−0.38 fitted "
                   "(lines) and the Ahmadi curve (Fig. 5.4).")
+        free = self.fit(f"tortuosity, free exponent, M={m_fit}", "flow", ["--model", "tortuosity", "--free", "e"] + where,
+                        f"tortuosity_free_M{m_fit}")
+        if free is not None:
+            self.comparisons.append((f"τ_H ∼ (φ − φ_c)^e, e free (M = {m_fit})", "−0.38 (Eq. 5.7, ν(1−D))",
+                                     (f"e = {fmt(*free.value('e'))}, φ_c = {fmt(*free.value('phi_c'))}" if free.ok
+                                      else f"no fit: {free.error}"), tv.REASON_TAU))
         t = tau[m_fit]
         if t is not None:
             self.comparisons.append((f"Table S5.1, Fig. 5.4B: φ_c of the tortuosity law (M = {m_fit})",
