@@ -12,7 +12,7 @@ stamp="$(date -u +%Y-%m-%d)"
 # Each tool's figures come from scripts/bench_<tool>.sh, run in pipeline order; a tool may
 # be skipped with BENCH_ONLY="rndmesh kcfit" (a space-separated list of the ones to run).
 export build out bench machine stamp
-for tool in rndmesh shellpack shell compress percolate lbflow lbflow_run palabos kcfit jam2d threads; do
+for tool in rndmesh shellpack shell compress percolate lbflow lbflow_run palabos kcfit jam2d study threads; do
   script="scripts/bench_$tool.sh"
   [ -f "$script" ] || continue
   if [ -n "${BENCH_ONLY:-}" ] && [[ " $BENCH_ONLY " != *" $tool "* ]]; then continue; fi

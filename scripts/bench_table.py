@@ -17,7 +17,7 @@ print("|---|---|---|---|")
 # Each tool's rows come from scripts/bench_table_<tool>.py, a SECTIONS map from a CSV file
 # of its bench script to a row formatter; files that are absent are skipped.
 here = Path(__file__).parent
-for tool in ["rndmesh", "shellpack", "shell", "compress", "percolate", "lbflow", "lbflow_run", "palabos", "kcfit", "jam2d", "threads"]:
+for tool in ["rndmesh", "shellpack", "shell", "compress", "percolate", "lbflow", "lbflow_run", "palabos", "kcfit", "jam2d", "study", "threads"]:
     path = here / f"bench_table_{tool}.py"
     if not path.exists():
         continue

@@ -8,8 +8,8 @@ PHI_C_D04 = {16: "0.142 (from Table S5.1's fit)", 50: "0.141 (Fig. S5.4)"}
 THRESHOLD = {16: "φ_c* = 0.064 ± 0.010, A = 3.70 ± 0.9, β = 1.2 ± 0.2",
              32: "φ_c* = 0.053 ± 0.020, A = 3.77 ± 0.7, β = 1.0 ± 0.1",
              50: "φ_c* = 0.035 ± 0.014, A = 3.67 ± 0.010, β = 1.1 ± 0.2"}
-BETA_DZ = "ΔZ ∼ δφ^β fitted near jamming (Fig. 4.3b; no single value printed)"
-TURGOR_RATIO = "rises steeply towards confluence (Fig. 4.6)"
+BETA_DZ = "β ≈ 0.6 for δφ < 0.15 (Fig. 4.3b; 0.68 in experiments on elastic shells)"
+TURGOR_RATIO = "slow near jamming, then up by about an order of magnitude towards φ ≈ 1 (Fig. 4.6)"
 
 TABLE_S51 = {
     ("5.5 / S5.5 A (log)", "kc-percolation"): "φ_c = 0.146 ± 0.003, γ = 0.83 ± 0.17",
@@ -40,6 +40,8 @@ REASON_TAU = ("the thesis fits N = 50 at M = 3; fewer seeds or a coarser M move 
 REASON_KAPPA = ("Our κ is in D₀² (the thesis's δ̃² changes only C). The fits use every percolating cluster of "
                 "the largest N at the largest M of the campaign; the thesis used N = 50, δ = 0.04, M = 3. "
                 "Linear-error fits weigh the few most permeable clusters, so they move most with the sample.")
+
+REASON_KAPPA_SHORT = "κ in D₀²; largest N and M of the campaign (thesis: N = 50, δ = 0.04, M = 3)"
 
 
 def ahmadi(phi, B=1.16):
