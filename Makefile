@@ -9,7 +9,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9 \
-  python3-matplotlib parallel xvfb xauth
+  python3-matplotlib parallel xvfb xauth slurmd slurmctld slurm-client munge
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
 BENCH_PACKAGES := libplb-dev libopenmpi-dev
 
@@ -111,7 +111,7 @@ run: deps configure
 # STUDY_DIR (out/study, out/study-<STUDY>) and its report.html. -j runs tasks in parallel.
 STUDY_TOOLS := rndmesh shellpack percolate lbflow kcfit
 STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
-.PHONY: study study-report study-jobs study-tools
+.PHONY: study study-report study-jobs study-tools test-slurm
 study-tools: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS)
 study: study-tools
@@ -123,6 +123,10 @@ study-report: study-tools
 # or a Slurm job array; run the stages in that order, each after the one before has finished.
 study-jobs: study-tools
 	@$(STUDY_MAKE) jobs
+# The tiny campaign on a single-node Slurm started here (scripts/study/slurm_local.sh), every
+# recipe an srun step; also part of make test (tests/tools/study_slurm.sh).
+test-slurm: study-tools
+	CMP_BIN=$(CURDIR)/$(BUILD)/bin CMP_SRC=$(CURDIR) bash tests/tools/study_slurm.sh campaign_as_job_steps
 
 # Programs into $(DESTDIR)$(PREFIX)/bin, man pages made from their --help into share/man/man1.
 install: all
