@@ -11,7 +11,7 @@ compress_row() {  # compress_row N LEVEL STEPS THREADS
   local n=$1 level=$2 steps=$3 threads=$4
   [ -s "$cmp_work/j$n.xyz" ] || "$build/bin/shellpack" jam -N "$n" --seed 1 -o "$cmp_work/j$n.xyz" -q >/dev/null
   [ -s "$cmp_work/ico$level.off" ] || "$build/bin/rndmesh" icosa --level "$level" -o "$cmp_work/ico$level.off" -q
-  "$build/bin/shellpack" compress "$cmp_work/j$n.xyz" --mesh "$cmp_work/ico$level.off" --phi 0.95 --timings -q \
+  "$build/bin/shellpack" compress "$cmp_work/j$n.xyz" --mesh "$cmp_work/ico$level.off" --contact hertz-vertices --phi 0.95 --timings -q \
     --stop-after-steps "$steps" --threads "$threads" --csv "$cmp_work/c.csv" --no-penetration-check
   /usr/bin/python3 - "$cmp_work/c.csv" "$n" "$threads" <<'PY'
 import csv, sys

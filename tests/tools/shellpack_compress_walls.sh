@@ -16,7 +16,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/../support/compress_start.sh"
 enter_scratch_dir
 
 # Coarse steps and a looser force tolerance keep each run to seconds.
-walls() { "$shellpack" compress "${at:-.}/jammed.xyz" --mesh "${at:-.}/cell.off" --walls --step 0.1 --ftol 1e-4 -q "$@"; }
+walls() { "$shellpack" compress "${at:-.}/jammed.xyz" --mesh "${at:-.}/cell.off" --contact hertz-vertices --walls --step 0.1 --ftol 1e-4 -q "$@"; }
 # row CSV PHI COLUMN: the value of COLUMN in the row at phi PHI.
 row() { paste -d, <(col "$1" phi) <(col "$1" "$3") | awk -F, -v p="$2" '$1 == p { print $2 }'; }
 

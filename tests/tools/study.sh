@@ -87,7 +87,9 @@ case_kill_and_resume() {
   sleep 0.5
   pgrep -f "$tmp/st/bin/" >/dev/null && fail "a program of the campaign outlived make: $(pgrep -af "$tmp/st/bin/")"
   [ -s "$tmp/st/report.html" ] && fail "the killed campaign should not have reached its report"
-  done_before=$(cut -d, -f2 "$tmp"/st/log/*.csv | sort -u)
+  # finished: logged as done and still there (make removes the target of a recipe it had not yet
+  # reaped when the signal came, as for any interrupted recipe)
+  done_before=$(for t in $(cut -d, -f2 "$tmp"/st/log/*.csv | sort -u); do [ -e "$t" ] && echo "$t"; done)
   started_before=$(wc -l <"$tmp/st/log/recipes.log")
   campaign "$tmp/st" all >"$tmp/log2" 2>&1 || fail "rerun: $(tail -20 "$tmp/log2")"
   for f in "$tmp"/whole/*.csv; do
