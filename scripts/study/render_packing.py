@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""render_packing.py PACKING.off CLUSTER.vtk OUT.png: one shell packing and its percolating pore
-cluster drawn by VTK's renderer (Fig. 5.2A). The shells are unwrapped across the periodic faces
+"""render_packing.py PACKING.off CLUSTER.vtk OUT.png [FLOW.vtk]: one shell packing, its percolating
+pore cluster and (with lbflow's --vtk field) streamlines of the flow through it, drawn by VTK's
+renderer (Fig. 5.2A). The shells are unwrapped across the periodic faces
 along their edges (as percolate and shellpack analyze read them); the cluster (percolate's image,
 1 = the spanning cluster) is drawn as its iso-surface at 0.5. Needs a display: the report runs
 it under xvfb-run when there is none."""
@@ -65,7 +66,43 @@ def polydata(V, F):
     return pd
 
 
-def main(packing, cluster, out):
+def streamlines(flow, box):
+    """Streamlines of lbflow's velocity field from a grid of seeds on the inlet plane, coloured by speed."""
+    reader = vtk.vtkStructuredPointsReader()
+    reader.SetFileName(flow)
+    reader.ReadAllVectorsOn()
+    reader.ReadAllScalarsOn()
+    reader.Update()
+    data = reader.GetOutput()
+    data.GetPointData().SetActiveVectors("velocity")
+    seeds = vtk.vtkPlaneSource()
+    seeds.SetOrigin(0.02 * box[0], 0, 0)
+    seeds.SetPoint1(0.02 * box[0], box[1], 0)
+    seeds.SetPoint2(0.02 * box[0], 0, box[2])
+    seeds.SetResolution(24, 24)
+    tracer = vtk.vtkStreamTracer()
+    tracer.SetInputData(data)
+    tracer.SetSourceConnection(seeds.GetOutputPort())
+    tracer.SetIntegrationDirectionToForward()
+    tracer.SetMaximumPropagation(4 * box[0])
+    tracer.SetIntegratorTypeToRungeKutta45()
+    tracer.Update()
+    speed = tracer.GetOutput().GetPointData().GetArray("velocity")
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(tracer.GetOutputPort())
+    if speed is not None:
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray("velocity")
+        mapper.ColorByArrayComponent("velocity", -1)
+        lo, hi = speed.GetRange(-1)
+        mapper.SetScalarRange(lo, hi)
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetLineWidth(1.5)
+    return actor
+
+
+def main(packing, cluster, out, flow=None):
     V, F, box, _ = read_packing(packing)
     V = unwrap(V, F, box)
     ren = vtk.vtkRenderer()
@@ -91,6 +128,9 @@ def main(packing, cluster, out):
     ca = vtk.vtkActor()
     ca.SetMapper(cm)
     ca.GetProperty().SetColor(0.2, 0.4, 0.85)
+    if flow:
+        ca.GetProperty().SetOpacity(0.25)
+        ren.AddActor(streamlines(flow, box))
     ren.AddActor(ca)
     outline = vtk.vtkOutlineSource()
     outline.SetBounds(0, box[0], 0, box[1], 0, box[2])
@@ -119,6 +159,6 @@ def main(packing, cluster, out):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 4:
-        sys.exit("usage: render_packing.py PACKING.off CLUSTER.vtk OUT.png")
+    if len(sys.argv) not in (4, 5):
+        sys.exit("usage: render_packing.py PACKING.off CLUSTER.vtk OUT.png [FLOW.vtk]")
     main(*sys.argv[1:])
