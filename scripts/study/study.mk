@@ -69,6 +69,7 @@ $(call stamp,jam,'JAM_OPTS=$(JAM_OPTS)')
 .PHONY: all structure flow report jobs tools
 
 all:
+	@scripts/study/check_tools.sh '$(RUN)'
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory structure
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory flow
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory report
@@ -79,6 +80,8 @@ TOOLS := rndmesh shellpack percolate lbflow kcfit
 $(BIN)/%: | $(BUILD)/bin/%
 	@mkdir -p $(BIN)
 	cp $(BUILD)/bin/$* $@
+$(BUILD)/bin/%:
+	@echo "study: $@ is missing: build the programs first (make study-tools)" >&2; exit 2
 tools: $(addprefix $(BIN)/,$(TOOLS))
 
 structure: $(ANALYSES) $(PERC_ROWS)
@@ -137,6 +140,7 @@ $(D)/perc/%.vtk: $(D)/perc/%.csv ; @test -f $@
 
 # The third pass: tables (one per stage, rows of every finished target), fits and the report.
 report: | $(BIN)/kcfit
+	@scripts/study/check_tools.sh
 	$(PYTHON) scripts/study/study_report.py --dir $(D) --study $(STUDY) --bin $(BIN) \
 	  --params 'N=$(N)' 'SEEDS=$(SEEDS)' 'VERTICES=$(VERTICES)' 'PHI=$(PHI)' 'DELTA=$(DELTA)' \
 	  'FLOW_DELTA=$(FLOW_DELTA)' 'REFINE=$(REFINE)' 'FLOW_N=$(FLOW_N)' 'FLOW_SEEDS=$(FLOW_SEEDS)' \

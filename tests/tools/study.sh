@@ -5,7 +5,7 @@
 # jobs printed for GNU parallel, and a report that refuses results of another version.
 #   bash study.sh --list | CASE     (needs CMP_BIN, CMP_SRC)
 set -uo pipefail
-cases="handoffs kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused"
+cases="handoffs kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused missing_tools_named"
 if [[ ${1:-} == --list ]]; then printf '%s\n' $cases; exit 0; fi
 case=${1:?CASE}
 bin=${CMP_BIN:?set CMP_BIN}
@@ -156,6 +156,17 @@ case_mixed_versions_refused() {
   [ -e "$tmp/st/report.html" ] && fail "a report was written"
   ALLOW_MIXED=1 campaign "$tmp/st" report >"$tmp/out" 2>&1 || fail "ALLOW_MIXED: $(tail -5 "$tmp/out")"
   grep -q "Mixed campaign" "$tmp/st/report.html" || fail "the report does not say it is mixed"
+}
+
+case_missing_tools_named() {
+  campaign "$tmp/st" all BUILD=/nonexistent >"$tmp/out" 2>&1 && fail "a campaign without programs"
+  grep -q "study: /nonexistent/bin/[a-z]* is missing: build the programs first (make study-tools)" "$tmp/out" ||
+    fail "$(cat "$tmp/out")"
+  mkdir "$tmp/path"   # a PATH without xvfb-run or srun
+  env -i PATH="$tmp/path" /bin/bash "$src/scripts/study/check_tools.sh" 'srun -N1 -n1' >"$tmp/out" 2>&1 && fail "nothing missing?"
+  grep -q "study: xvfb-run .* is missing: apt-get install xvfb xauth (or make deps)" "$tmp/out" || fail "$(cat "$tmp/out")"
+  grep -q "study: srun (RUN=srun -N1 -n1) is missing: apt-get install slurm-client (or make deps)" "$tmp/out" || fail "$(cat "$tmp/out")"
+  [ "$(wc -l <"$tmp/out")" = 2 ] || fail "only those two: $(cat "$tmp/out")"
 }
 
 "case_$case"
