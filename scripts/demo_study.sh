@@ -8,3 +8,16 @@ cat >>"$out/README.txt" <<TXT
   study/report.html   the study at toy size (make study STUDY=demo): Figs 5.2-5.5, Ch. 4, Table S5.1 beside the thesis
   study/tables/, study/fits/, study/figures/   its tables (one per stage), kcfit's fits and the figures
 TXT
+# The fitted laws must come out finite and physical: 0 < phi_c < 1, a positive total exponent of
+# Eq. 5.8 (gamma + 0.76 > 0), a tortuosity that falls with porosity (e < 0).
+/usr/bin/python3 - "$out/study/fits" <<'PY' >&2 || { echo "make run: the study's fits are not physical" >&2; exit 1; }
+import csv, math, sys
+def params(name):
+    rows = csv.DictReader(l for l in open(f"{sys.argv[1]}/{name}.csv") if not l.startswith("#"))
+    return {r["parameter"]: float(r["value"]) for r in rows}
+kc, tau = params("kappa_kc-percolation_log"), params("tortuosity_free_M1")
+phi_c, gamma, e = kc["phi_c"], kc["gamma"], tau["e"]
+print(f"  study: Eq. 5.8 phi_c = {phi_c:.3f}, gamma = {gamma:.2f}; tau_H ~ (phi - phi_c)^e, e = {e:.2f}")
+assert all(math.isfinite(v) for v in (phi_c, gamma, e)), (phi_c, gamma, e)
+assert 0 < phi_c < 1 and gamma + 0.76 > 0 and e < 0, (phi_c, gamma, e)
+PY
