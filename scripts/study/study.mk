@@ -26,7 +26,7 @@ RUN       ?=
 PYTHON    ?= /usr/bin/python3
 D := $(STUDY_DIR)
 BIN := $(D)/bin
-TIMED := scripts/study/timed.sh $(D)/log
+TIMED := $(BIN)/timed.sh $(D)/log
 
 range = $(shell scripts/study/range.sh '$(1)')
 N_LIST      := $(strip $(N))
@@ -66,7 +66,7 @@ $(call stamp,jam,'JAM_OPTS=$(JAM_OPTS)')
 .DELETE_ON_ERROR:
 .SECONDARY:
 .SECONDEXPANSION:
-.PHONY: all structure flow report jobs tools
+.PHONY: all structure flow report jobs tools scripts
 
 all:
 	@scripts/study/check_tools.sh '$(RUN)'
@@ -74,26 +74,32 @@ all:
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory flow
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory report
 
-# The campaign runs the programs it copied here at its start, so that one campaign is one version
-# of the tools even when the checkout is rebuilt while it runs (make study-clean-tools to renew).
+# The campaign runs the programs and recipe scripts it copied into $(BIN) at its start, so that
+# one campaign is one version of the tools even when the checkout is rebuilt or edited while it
+# runs (a shell reads a script as it goes: editing a running one breaks it). Delete $(BIN) to renew.
 TOOLS := rndmesh shellpack percolate lbflow kcfit
+RECIPE_SCRIPTS := timed.sh compress.sh flow.sh forward_signals.sh
+$(BIN)/%.sh: | scripts/study/%.sh
+	@mkdir -p $(BIN)
+	cp scripts/study/$*.sh $@
 $(BIN)/%: | $(BUILD)/bin/%
 	@mkdir -p $(BIN)
 	cp $(BUILD)/bin/$* $@
 $(BUILD)/bin/%:
 	@echo "study: $@ is missing: build the programs first (make study-tools)" >&2; exit 2
+scripts: $(addprefix $(BIN)/,$(RECIPE_SCRIPTS))
 tools: $(addprefix $(BIN)/,$(TOOLS))
 
 structure: $(ANALYSES) $(PERC_ROWS)
 
-$(MESH): | $(BIN)/rndmesh
+$(MESH): | $(BIN)/rndmesh scripts
 	@mkdir -p $(@D)
 	$(RUN) $(TIMED) mesh $@ $(BIN)/rndmesh icosa --level $(icosa_level) --radius 0.5 -q -o $@
 
 # icosahedron quadrisected: level 1 has 12 vertices, each level about four times more
 icosa_level = $(or $(word 2,$(subst :, ,$(filter $(VERTICES):%,12:1 42:2 162:3 642:4 2562:5 10242:6))),1)
 
-$(D)/jam/%.xyz: $(D)/params/jam.txt | $(BIN)/shellpack
+$(D)/jam/%.xyz: $(D)/params/jam.txt | $(BIN)/shellpack scripts
 	@mkdir -p $(@D)
 	$(RUN) $(TIMED) jam $@ $(BIN)/shellpack jam -N $(call n_of,$*) --seed $(call seed_of,$*) $(JAM_OPTS) \
 	  -q -o $@ --csv /dev/null
@@ -103,20 +109,20 @@ seed_of = $(patsubst s%,%,$(word 2,$(subst _, ,$(1))))
 
 # One compression per (N, seed); pack_<phi>.off at every target. With a checkpoint left by a
 # killed run it resumes (the checkpoint repeats the run's arguments).
-$(D)/compress/%/compress.csv: $(D)/jam/%.xyz $(MESH) $(D)/params/compress.txt | $(BIN)/shellpack
+$(D)/compress/%/compress.csv: $(D)/jam/%.xyz $(MESH) $(D)/params/compress.txt | $(BIN)/shellpack scripts
 	@mkdir -p $(@D)
-	$(RUN) $(TIMED) compress $@ scripts/study/compress.sh $(BIN)/shellpack $(@D) $< $(MESH) '$(PHI_LIST)' \
+	$(RUN) $(TIMED) compress $@ $(BIN)/compress.sh $(BIN)/shellpack $(@D) $< $(MESH) '$(PHI_LIST)' \
 	  $(THREADS) $(D)/params/compress.txt $(COMPRESS_OPTS)
 
 
-$(D)/analyze/%.csv: $(D)/compress/%/compress.csv | $(BIN)/shellpack
+$(D)/analyze/%.csv: $(D)/compress/%/compress.csv | $(BIN)/shellpack scripts
 	@mkdir -p $(@D)
 	$(RUN) $(TIMED) analyze $@ $(BIN)/shellpack analyze $(foreach p,$(PHI_LIST),$(D)/compress/$*/pack_$(p).off) \
 	  --threads $(THREADS) -q -o $@
 
 # One percolate row per (packing, delta); the cluster image is kept at FLOW_DELTA only.
 # (a packing is finished when its compression's table is: the table is written last)
-$(D)/perc/%.csv: $$(D)/compress/$$(call run_of,$$*)/compress.csv $(D)/params/percolate.txt | $(BIN)/percolate
+$(D)/perc/%.csv: $$(D)/compress/$$(call run_of,$$*)/compress.csv $(D)/params/percolate.txt | $(BIN)/percolate scripts
 	@mkdir -p $(@D)
 	$(RUN) $(TIMED) percolate $@ $(BIN)/percolate $(<D)/pack_$(notdir $*).off --delta $(call delta_of,$*) $(PERCOLATE_OPTS) --threads $(THREADS) -q \
 	  --csv $@ $(if $(filter $(call delta_of,$*),$(FLOW_DELTA)),-o $(@:.csv=.vtk))
@@ -131,9 +137,9 @@ FLOW_ROWS := $(foreach r,$(flow_runs),$(foreach m,$(REFINE_LIST),$(foreach p,$(s
 endif
 flow: $(FLOW_ROWS)
 
-$(D)/flow/%.csv: $$(D)/perc/$$(call run_of,$$*)/d$(FLOW_DELTA)/$$(notdir $$*).vtk $(D)/params/flow.txt | $(BIN)/lbflow
+$(D)/flow/%.csv: $$(D)/perc/$$(call run_of,$$*)/d$(FLOW_DELTA)/$$(notdir $$*).vtk $(D)/params/flow.txt | $(BIN)/lbflow scripts
 	@mkdir -p $(@D)
-	$(RUN) $(TIMED) flow $@ scripts/study/flow.sh $(BIN)/lbflow $< $(patsubst M%,%,$(word 2,$(subst /, ,$*))) $@ \
+	$(RUN) $(TIMED) flow $@ $(BIN)/flow.sh $(BIN)/lbflow $< $(patsubst M%,%,$(word 2,$(subst /, ,$*))) $@ \
 	  $(THREADS) $(D)/params/flow.txt $(LBFLOW_OPTS)
 
 $(D)/perc/%.vtk: $(D)/perc/%.csv ; @test -f $@
