@@ -44,6 +44,13 @@ def mean_err(values):
     return v.mean(), (v.std(ddof=1) / math.sqrt(len(v)) if len(v) > 1 else float("nan")), len(v)
 
 
+def fit_text(f):
+    """A fit's parameters but the prefactor C ('phi_c = 0.146 ± 0.003, gamma = ...'); C alone when
+    it is the only one fitted."""
+    shown = {k: v for k, v in f.params.items() if k != "C"} or f.params
+    return ", ".join(f"{k} = {fmt(*v)}" for k, v in shown.items())
+
+
 class Report:
     def __init__(self, args):
         self.a = args
@@ -164,14 +171,13 @@ class Report:
         for ax, pick, title in ((axes[0], [(n, fd) for n in ns], f"δ = {fd:g} D₀, each N (Fig. 5.2B)"),
                                 (axes[1], [(ns[-1], d) for d in deltas], f"N = {ns[-1]}, each δ (Fig. 5.2C)")):
             for key in pick:
-                pts = [(1 - num(r, "porosity"), num(r, "percolates")) for r in rows
+                # binned by the packings' target phi (every seed's packing at one phi is one bin)
+                pts = [(1 - float(r["phi_target"]), num(r, "percolates")) for r in rows
                        if int(r["particles"]) == key[0] and abs(float(r["delta"]) - key[1]) < 1e-9]
                 if not pts:
                     continue
-                por = np.array([1 - p[0] for p in pts])
-                hit = np.array([p[1] for p in pts])
-                bins = np.unique(np.round(por, 3))
-                prob = [hit[np.round(por, 3) == b].mean() for b in bins]
+                bins = np.array(sorted({p[0] for p in pts}))
+                prob = [np.mean([p[1] for p in pts if p[0] == b]) for b in bins]
                 label = f"N = {key[0]}" if ax is axes[0] else f"δ = {key[1]:g}"
                 line = ax.plot(bins, prob, "o", ms=4, label=label)[0]
                 f = self.sig.get(key)
@@ -416,7 +422,7 @@ class Report:
                 if f is None:
                     continue
                 if f.ok:
-                    ours = ", ".join(f"{k} = {fmt(*v)}" for k, v in f.params.items() if k != "C")
+                    ours = fit_text(f)
                     r2 = f.meta.get("r2", "")
                 else:
                     ours, r2 = "no fit: " + f.error, ""
@@ -464,7 +470,7 @@ class Report:
         for figname, model, loss, extra, f in getattr(self, "kappa_fits", []):
             if f is None:
                 continue
-            ours = (", ".join(f"{k} = {fmt(*v)}" for k, v in f.params.items() if k != "C") if f.ok
+            ours = (fit_text(f) + f", R² (loss space) = {float(f.meta.get('r2', 'nan')):.3f}" if f.ok
                     else "no fit: " + f.error)
             lines.append(f"| Table S5.1, {figname}, {tv.MODEL_LABEL[model]} | "
                          f"{tv.TABLE_S51.get((figname, model), '–')} | {ours} | {tv.REASON_KAPPA_SHORT} |")
