@@ -112,10 +112,8 @@ void run_grow(const Options& o, const std::string& provenance) {
     const PackingAnalysis a = analyse_packing(cells, engine);
     io::XyzWriter(packing->stream()).write(packing_frame(cells, o.growth.box, &a,
                                                          packing_info(colony, o.common.seed, o.dphi, provenance)));
-    packing->commit();
   }
-  if (trajectory) trajectory->commit();
-  if (csv) csv->commit();
+  io::commit_in_order({packing.get(), trajectory.get(), csv.get()});
   if (!o.common.quiet)
     std::cerr << fmt::format("jam2d: jammed at phi_J = {:.6f}; {} cells at phi = {:.6f}, t = {:.4f}/gamma0; {} steps "
                              "accepted, {} rejected, {} FIRE iterations\n",
@@ -192,14 +190,15 @@ int main(int argc, char** argv) {
     tool.add_common(*grow, o.common, cli::Tool::kSeed | cli::Tool::kQuiet);
     tool.add_double(*grow, "--dphi", o.dphi, "grow beyond jamming to phi_J + dphi", cli::non_negative());
     grow->add_option("--P0", o.P0_text, "feedback pressure P0 [k] beyond jamming ('inf': none)");
-    grow->add_option("-o,--packing", o.packing_output, "write the final packing as extended XYZ ('-': stdout)");
-    grow->add_option("--csv", o.csv_output, "growth table, one row per accepted step ('-': stdout; '' for none)");
-    grow->add_option("--trajectory", o.trajectory_output, "write every --every-th accepted step as XYZ frames");
+    tool.add_output(*grow, "-o,--packing", o.packing_output, "write the final packing as extended XYZ ('-': stdout)");
+    tool.add_output(*grow, "--csv", o.csv_output, "growth table, one row per accepted step ('-': stdout; '' for none)");
+    tool.add_output(*grow, "--trajectory", o.trajectory_output, "write every --every-th accepted step as XYZ frames");
     tool.add_long(*grow, "--every", o.every, "accepted steps between --trajectory frames", cli::at_least(1));
 
     auto* moduli = app->add_subcommand("moduli", "P, B, G, Z, Z_iso, f_u and rattlers of static packings; CSV row per frame");
     moduli->add_option("packings", o.inputs, "extended XYZ packings as jam2d writes them ('-': stdin)")->required();
-    moduli->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.declare_inputs(*moduli, o.inputs);
+    tool.add_output(*moduli, "-o,--output", o.output, "CSV ('-': stdout)");
     moduli->add_option("--contact", o.contact, "contact law the packing was made with");
     tool.add_common(*moduli, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
@@ -208,7 +207,7 @@ int main(int argc, char** argv) {
     tool.add_seed_options(*sweep, o.seeding, "colony");
     sweep->add_option("--dphi", o.dphi_text, "dphi values: FIRST:LAST:STEP or a comma list (0: at jamming)");
     sweep->add_option("--P0", o.P0_text, "comma list of feedback pressures [k], 'inf' for none");
-    sweep->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.add_output(*sweep, "-o,--output", o.output, "CSV ('-': stdout)");
     tool.add_common(*sweep, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     tool.parse(argc, argv);

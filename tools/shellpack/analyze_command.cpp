@@ -7,10 +7,11 @@ CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpti
   auto* analyze = parent.add_subcommand("analyze", "the Chapter 4 observables of packings of shells (packing OFFs): Z, g(r), "
                                                    "shapes, turgor, contact forces, mu_eff, walls, Voronoi facets");
   analyze->add_option("packings", an.inputs, "packing OFFs ('-': stdin); one summary row each")->required();
-  analyze->add_option("-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
-  analyze->add_option("--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
-  analyze->add_option("--shells", an.shells_output, "write one row per shell to this CSV");
-  analyze->add_option("--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
+  tool.declare_inputs(*analyze, an.inputs);
+  tool.add_output(*analyze, "-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
+  tool.add_output(*analyze, "--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
+  tool.add_output(*analyze, "--shells", an.shells_output, "write one row per shell to this CSV");
+  tool.add_output(*analyze, "--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
   E_opt_ = tool.add_double(*analyze, "-E,--youngs-modulus", E_, "Young's modulus E [P] (default: the file's E=)",
                            cli::positive())->default_str("");
   nu_opt_ = tool.add_double(*analyze, "--nu,--poisson-ratio", nu_, "Poisson's ratio nu (default: the file's nu=, else 0.5)",
