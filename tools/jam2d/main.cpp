@@ -82,6 +82,7 @@ void run_grow(const Options& o, const std::string& provenance) {
   std::unique_ptr<io::CsvWriter> table;
   if (csv) {
     table = std::make_unique<io::CsvWriter>(csv->stream());
+    table->allow_infinity();  // P0 = inf: no feedback
     table->meta("provenance", provenance);
     table->meta("units", kUnits);
     table->meta("box", io::format_number(o.growth.box));
@@ -163,6 +164,7 @@ void run_sweep(const Options& o, const std::vector<std::uint64_t>& seeds, const 
   });
   bar.finish();
   io::CsvWriter table(out.stream());
+  table.allow_infinity();  // P0 = inf: no feedback
   table.meta("provenance", provenance);
   table.meta("units", kUnits);
   table.meta("box", io::format_number(o.growth.box));

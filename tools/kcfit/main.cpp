@@ -85,6 +85,7 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
   }
   io::AtomicOutput out(o.output);
   io::CsvWriter csv(out.stream());
+  csv.allow_infinity();  // undefined standard errors are inf, as curve_fit reports them
   fit::write_report_csv(csv, report);
   std::unique_ptr<io::AtomicOutput> plot;
   if (!o.plot.empty()) {

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Issue 37, items 1 and 4-7: extreme but well-formed values give exit 2 naming file and line
+# (no crash, no hang, no internal error); nothing non-finite is read where the format promises
+# finite numbers or written anywhere; a damaged checkpoint is refused; size limits are said
+# from the option or the header before anything large is allocated; '-' reads every format.
+# `reliability_inputs.sh --list` prints the cases; `reliability_inputs.sh CASE` runs one
+# (ctest registers each). Needs CMP_BIN and CMP_SRC.
+set -uo pipefail
+bin=${CMP_BIN:-build/bin}
+src=${CMP_SRC:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
+lbflow="$bin/lbflow"
+percolate="$bin/percolate"
+shellpack="$bin/shellpack"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
+export OMP_NUM_THREADS=1
+enter_scratch_dir
+
+# bounded TOOL STATUS PATTERN cmd...: expect_error within 60 s (a hang is a failure, not a
+# wait) and below 300 MB of memory.
+bounded() {
+  cli_tool=$1
+  local want=$2 pattern=$3
+  shift 3
+  expect_error "$want" "$pattern" timeout 60 /usr/bin/time -f %M -o rss.txt "$@"
+  local rss
+  rss=$(tail -1 rss.txt)
+  [ "$rss" -lt 300000 ] || fail "$*: used $rss kB"
+}
+cluster_vtk() {
+  printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0.5 0.5 0.5 0.4\n' >sphere.xyz
+  "$percolate" sphere.xyz --delta 0.125 -o c.vtk -q >p.csv || fail "percolate"
+}
+# The octahedron packing of tests/data/io with its box line or a vertex replaced.
+packing_with() {
+  sed "$1" "$src/tests/data/io/octahedron_packing.off" >"$2"
+}
+# A float VTK image of a straight duct, 6x4x4 (1 = fluid), with field data.
+float_vtk() {
+  /usr/bin/python3 - "$@" <<'PY'
+import struct, sys
+spacing = sys.argv[1] if len(sys.argv) > 1 else "1"
+field = sys.argv[2] if len(sys.argv) > 2 else "0.125"
+nx, ny, nz = 6, 4, 4
+vals = [1.0 if 1 <= y <= 2 and 1 <= z <= 2 else 0.0 for z in range(nz) for y in range(ny) for x in range(nx)]
+head = ("# vtk DataFile Version 3.0\nduct\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS %d %d %d\n"
+        "ORIGIN 0 0 0\nSPACING %s %s %s\nFIELD FieldData 1\ndelta 1 1 double\n" % (nx, ny, nz, spacing, spacing, spacing))
+points = "\nPOINT_DATA %d\nSCALARS v float 1\nLOOKUP_TABLE default\n" % (nx * ny * nz)
+open("duct.vtk", "wb").write(head.encode() + struct.pack(">d", float(field)) + points.encode() +
+                             struct.pack(">%df" % len(vals), *vals) + b"\n")
+PY
+}
+
+# --- item 4: non-finite numbers ---
+case_vtk_field_data_inf_refused() {
+  float_vtk 1 inf
+  bounded lbflow 2 "duct.vtk:9: FIELD array 'delta' holds inf: its values must be finite" "$lbflow" duct.vtk --refine 1 -o out.csv
+  float_vtk 1 nan
+  bounded lbflow 2 "duct.vtk:9: FIELD array 'delta' holds nan" "$lbflow" duct.vtk --refine 1 -o out.csv
+}
+case_vtk_spacing_overflow_refused() {
+  float_vtk 1e308
+  bounded lbflow 2 "duct.vtk:7: SPACING 1e+308 .*overflows" "$lbflow" duct.vtk --refine 1 -o out.csv
+  float_vtk 1e200
+  bounded lbflow 2 "duct.vtk:7: SPACING 1e+200 .*overflows" "$lbflow" duct.vtk --refine 1 -o out.csv
+  # a large but sound spacing runs, and every number it writes is finite
+  float_vtk 1e100
+  "$lbflow" duct.vtk --refine 1 -q --drive force -o ok.csv || fail "spacing 1e100"
+  ! grep -qiw 'inf\|nan' ok.csv || fail "non-finite number written: $(cat ok.csv)"
+}
+
+run_cases "$@"
