@@ -24,8 +24,13 @@
 
 namespace cmp::io {
 
+// The largest magnitude of a coordinate or box side the OFF reader takes: cubes of
+// differences of such numbers (volumes) stay finite doubles.
+inline constexpr double kMaxCoordinate = 1e100;
+
 struct PackingInfo {
   std::optional<Eigen::Vector3d> box;      // # box Lx Ly Lz
+  long box_line = 0;                       // its line (for messages)
   std::array<bool, 3> periodic{false, false, false};
   std::vector<int> shell_vertex_counts;    // # shells K n1 ... nK (empty: not a packing)
 };

@@ -50,6 +50,25 @@ open("duct.vtk", "wb").write(head.encode() + struct.pack(">d", float(field)) + p
 PY
 }
 
+# --- item 1: extreme values in a packing OFF ---
+case_analyze_vertex_at_1e308() {
+  packing_with '7s/.*/1e308 1e308 1e308/' far.off
+  bounded shellpack 2 "far.off:7: coordinate '1e308' is beyond" "$shellpack" analyze far.off -o out.csv
+  bounded percolate 2 "far.off:7: coordinate '1e308' is beyond" "$percolate" far.off --delta 0.5 -o out.vtk
+}
+case_analyze_huge_box() {
+  packing_with 's/^# box .*/# box 1e308 1e308 1e308/' huge.off
+  bounded shellpack 2 "huge.off:3: box side '1e308' is beyond" "$shellpack" analyze huge.off -o out.csv
+  packing_with 's/^# box .*/# box 1e100 1e100 1e100/; s/^# periodic .*/# periodic 1 1 1/' big.off
+  bounded shellpack 2 "big.off:3: box side" "$shellpack" analyze big.off -o out.csv
+}
+case_rdf_options_bounded() {
+  packing_with 's/^# periodic .*/# periodic 1 1 1/' p.off
+  bounded shellpack 2 "--bin: --rmax / --bin makes .* bins of g(r)" "$shellpack" analyze p.off --bin 1e-9 -o out.csv
+  bounded shellpack 2 "--rmax: --rmax / --bin makes .* bins of g(r)" \
+    "$shellpack" structure "$src/data/percolate/simple_cubic_4x4x4.xyz" --rmax 1e300 -o out.csv
+}
+
 # --- item 4: non-finite numbers ---
 case_vtk_field_data_inf_refused() {
   float_vtk 1 inf

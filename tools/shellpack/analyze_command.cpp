@@ -1,5 +1,9 @@
 #include "analyze_command.hpp"
 
+#include "spheres/structure.hpp"
+
+#include <fmt/format.h>
+
 namespace cmp::shellpack {
 
 CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) {
@@ -43,6 +47,10 @@ CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpti
 void AnalyzeCommand::check(cli::Tool& tool) {
   const auto& b = batch_;
   tool.check(b.options.r_max > b.options.bin_width, "--rmax", "must exceed --bin");
+  tool.check(b.options.r_max / b.options.bin_width <= spheres::kMaxRdfBins,
+             b.options.bin_width < packrun::AnalyzeBatch{}.options.bin_width ? "--bin" : "--rmax",
+             fmt::format("--rmax / --bin makes {:.3g} bins of g(r), more than {:g}", b.options.r_max / b.options.bin_width,
+                         spheres::kMaxRdfBins));
   const int to_stdout =
       (b.output == "-") + (b.rdf_output == "-") + (b.shells_output == "-") + (b.contacts_output == "-");
   tool.check(to_stdout <= 1, "", "-o, --rdf, --shells and --contacts: at most one of them may be '-' (stdout)");

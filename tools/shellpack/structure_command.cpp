@@ -1,5 +1,9 @@
 #include "structure_command.hpp"
 
+#include "spheres/structure.hpp"
+
+#include <fmt/format.h>
+
 namespace cmp::shellpack {
 
 CLI::App* StructureCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) {
@@ -22,6 +26,9 @@ CLI::App* StructureCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOp
 void StructureCommand::check(cli::Tool& tool) {
   const auto& b = batch_;
   tool.check(b.r_max > b.bin_width, "--rmax", "must exceed --bin");
+  tool.check(b.r_max / b.bin_width <= spheres::kMaxRdfBins, b.bin_width < packrun::StructureBatch{}.bin_width ? "--bin" : "--rmax",
+             fmt::format("--rmax / --bin makes {:.3g} bins of g(r), more than {:g}", b.r_max / b.bin_width,
+                         spheres::kMaxRdfBins));
   const int to_stdout = (b.output == "-") + (b.forces_output == "-") + (b.summary_output == "-");
   tool.check(to_stdout <= 1, "", "-o, --forces and --summary: at most one of them may be '-' (stdout)");
 }
