@@ -87,4 +87,28 @@ case_vtk_spacing_overflow_refused() {
   ! grep -qiw 'inf\|nan' ok.csv || fail "non-finite number written: $(cat ok.csv)"
 }
 
+# --- item 5: checkpoints know they are intact ---
+case_damaged_checkpoint_refused() {
+  cluster_vtk
+  "$lbflow" c.vtk --refine 1 -q --check-every 20 --max-steps 200 --checkpoint run.chk --checkpoint-every 0 \
+    >/dev/null 2>&1
+  [ -f run.chk ] || fail "no checkpoint"
+  "$lbflow" --resume run.chk -q --max-steps 100000 -o intact.csv || fail "the intact checkpoint resumes"
+  # one flipped bit in the populations
+  /usr/bin/python3 - <<'PY'
+data = bytearray(open("run.chk", "rb").read())
+data[len(data) // 2] ^= 0x04
+open("flip.chk", "wb").write(data)
+data = bytearray(open("run.chk", "rb").read())
+start = len(data) // 3
+data[start:start + 64] = b"\xff" * 64
+open("ff.chk", "wb").write(data)
+open("cut.chk", "wb").write(open("run.chk", "rb").read()[:-100])
+PY
+  cli_tool=lbflow
+  expect_error 2 "flip.chk: checkpoint damaged" "$lbflow" --resume flip.chk -q -o out.csv
+  expect_error 2 "ff.chk: checkpoint damaged" "$lbflow" --resume ff.chk -q -o out.csv
+  expect_error 2 "cut.chk: checkpoint damaged" "$lbflow" --resume cut.chk -q -o out.csv
+}
+
 run_cases "$@"
