@@ -327,6 +327,22 @@ void check_image(const VoxelImage<T>& image) {
 
 }  // namespace
 
+// The values after a header parse_header has read.
+template <class T>
+VoxelImage<T> read_body(LineReader& in, const VtkInfo& info) {
+  VoxelImage<T> image;
+  image.dims = info.dims;
+  image.origin = info.origin;
+  image.spacing = info.spacing;
+  image.name = info.name;
+  image.field_data = info.field_data;
+  if (info.binary)
+    read_binary(in, info, image.data);
+  else
+    read_ascii(in, info, image.data);
+  return image;
+}
+
 VtkInfo read_vtk_info(const std::string& path) {
   LineReader in(path);
   return parse_header(in);
@@ -347,17 +363,19 @@ VoxelImage<T> read_vtk(Input& input) {
     throw InputError(
         path, info.scalars_line,
         fmt::format("scalar type is '{}', expected '{}'", info.type, vtk_type_name<T>()));
-  VoxelImage<T> image;
-  image.dims = info.dims;
-  image.origin = info.origin;
-  image.spacing = info.spacing;
-  image.name = info.name;
-  image.field_data = info.field_data;
-  if (info.binary)
-    read_binary(in, info, image.data);
-  else
-    read_ascii(in, info, image.data);
-  return image;
+  return read_body<T>(in, info);
+}
+
+AnyVoxelImage read_vtk_any(Input& input) {
+  LineReader in(input);
+  const auto info = parse_header(in);
+  if (info.type == "unsigned_char") return read_body<std::uint8_t>(in, info);
+  if (info.type == "int") return read_body<std::int32_t>(in, info);
+  if (info.type == "float") return read_body<float>(in, info);
+  if (info.type == "double") return read_body<double>(in, info);
+  throw InputError(in.path(), info.scalars_line,
+                   fmt::format("scalar type '{}' is not supported: expected unsigned_char, int, float or double",
+                               info.type));
 }
 
 template <VtkScalar T>

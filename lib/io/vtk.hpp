@@ -23,6 +23,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace cmp::io {
@@ -113,6 +114,12 @@ VoxelImage<T> read_vtk(const std::string& path);
 // Same, from an opened input.
 template <VtkScalar T>
 VoxelImage<T> read_vtk(Input& input);
+
+// An image of any of the scalar types, read in one pass (standard input): the type is the
+// one its SCALARS line names.
+using AnyVoxelImage =
+    std::variant<VoxelImage<std::uint8_t>, VoxelImage<std::int32_t>, VoxelImage<float>, VoxelImage<double>>;
+AnyVoxelImage read_vtk_any(Input& input);
 
 // Writes the image as BINARY atomically (see AtomicOutput; "-" = stdout). title is cut to
 // 255 characters, line breaks become spaces. Converts to big-endian chunk by chunk, so memory

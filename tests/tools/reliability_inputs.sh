@@ -111,4 +111,38 @@ PY
   expect_error 2 "cut.chk: checkpoint damaged" "$lbflow" --resume cut.chk -q -o out.csv
 }
 
+# --- item 6: limits from the option or the header, before large allocations ---
+case_raw_pipe_shorter_than_dims() {
+  bounded lbflow 2 "<stdin>: holds 2 bytes, --dims 1000x1000x1000 needs 1000000000" \
+    sh -c 'printf ab | "$0" - --dims 1000x1000x1000 -o out.csv' "$lbflow"
+  bounded lbflow 2 "--dims: 10000x10000x10000 makes 2^31 - 1 voxels or more" \
+    sh -c 'printf ab | "$0" - --dims 10000x10000x10000 -o out.csv' "$lbflow"
+  bounded lbflow 2 "--dims: 2048x1024x1024 makes 2^31 - 1 voxels or more" \
+    sh -c 'printf ab | "$0" - --dims 2048x1024x1024 -o out.csv' "$lbflow"
+}
+case_vtk_header_over_the_labelling_limit() {
+  printf '# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2048 1024 1024\nPOINT_DATA 2147483648\nSCALARS v unsigned_char 1\nLOOKUP_TABLE default\n' >big.vtk
+  truncate -s 2200000000 big.vtk  # sparse: the size of the data, no disk used
+  bounded lbflow 2 "big.vtk: DIMENSIONS 2048 1024 1024 make 2^31 - 1 points or more" "$lbflow" big.vtk -o out.csv
+}
+case_refine_too_large() {
+  cluster_vtk
+  bounded lbflow 2 "--refine: 8 x 8 x 8 voxels of c.vtk at M = 100000 make .* lattice nodes, more than 2\\^40" \
+    "$lbflow" c.vtk --refine 100000 -o out.csv
+  bounded lbflow 2 "--refine: .* more than 2\\^31 - 2" "$lbflow" sphere.xyz --delta 0.01 --refine 100 -o out.csv
+}
+
+# --- item 7: '-' reads every format ---
+case_stdin_every_format() {
+  "$shellpack" jam -N 12 -q -o - 2>/dev/null | "$lbflow" - --delta 0.1 --refine 1 -q -o xyz.csv ||
+    fail "a sphere packing on stdin"
+  [ "$(grep -v '^#' xyz.csv | wc -l)" -eq 2 ] || fail "no row: $(cat xyz.csv)"
+  float_vtk
+  "$lbflow" - --refine 1 -q --drive force -o float.csv <duct.vtk || fail "a float VTK on stdin"
+  "$lbflow" duct.vtk --refine 1 -q --drive force -o file.csv || fail "the same from the file"
+  # the same row but for the file's name
+  cmp <(grep -v '^#' float.csv | tail -1 | cut -d, -f2-) <(grep -v '^#' file.csv | tail -1 | cut -d, -f2-) ||
+    fail "stdin and file differ: $(diff float.csv file.csv)"
+}
+
 run_cases "$@"

@@ -52,7 +52,8 @@ void declare(cli::Tool& tool, Options& o) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_option("inputs", o.inputs,
                  "pore images: binary VTK STRUCTURED_POINTS (percolate -o; non-zero = fluid), raw bytes with --dims, "
-                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads a VTK image or raw bytes from stdin")
+                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads any of them from stdin, told from "
+                 "the content (raw bytes: with --dims)")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   tool.declare_inputs(app, o.inputs);
   app.add_option("--dims", o.dims, "the inputs are raw bytes (x fastest, non-zero = fluid) of NXxNYxNZ voxels");
