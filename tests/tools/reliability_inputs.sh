@@ -15,13 +15,13 @@ source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 export OMP_NUM_THREADS=1
 enter_scratch_dir
 
-# bounded TOOL STATUS PATTERN cmd...: expect_error within 60 s (a hang is a failure, not a
-# wait) and below 300 MB of memory.
+# bounded TOOL STATUS PATTERN cmd...: expect_error within 60 s of CPU time (a runaway
+# computation fails, whatever the machine's load) and below 300 MB of memory.
 bounded() {
   cli_tool=$1
   local want=$2 pattern=$3
   shift 3
-  expect_error "$want" "$pattern" timeout 60 /usr/bin/time -f %M -o rss.txt "$@"
+  expect_error "$want" "$pattern" cpu_limited 60 /usr/bin/time -f %M -o rss.txt "$@"
   local rss
   rss=$(tail -1 rss.txt)
   [ "$rss" -lt 300000 ] || fail "$*: used $rss kB"
