@@ -22,11 +22,10 @@
 #include <string>
 #include <vector>
 
-namespace cmp::io {
+// kMaxCoordinate (io/parse_number.hpp): the largest coordinate or box side the reader takes.
+#include "io/parse_number.hpp"
 
-// The largest magnitude of a coordinate or box side the OFF reader takes: cubes of
-// differences of such numbers (volumes) stay finite doubles.
-inline constexpr double kMaxCoordinate = 1e100;
+namespace cmp::io {
 
 struct PackingInfo {
   std::optional<Eigen::Vector3d> box;      // # box Lx Ly Lz

@@ -62,6 +62,16 @@ case_analyze_huge_box() {
   packing_with 's/^# box .*/# box 1e100 1e100 1e100/; s/^# periodic .*/# periodic 1 1 1/' big.off
   bounded shellpack 2 "big.off:3: box side" "$shellpack" analyze big.off -o out.csv
 }
+case_xyz_huge_lattice_or_position() {
+  # shellpack structure wrote g = nan (now refused by the writer, exit 1); refused at the line, exit 2
+  xyz() { printf '2\nLattice="%s 0 0 0 %s 0 0 0 %s" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T"\nX %s 0.5 0.5 0.3\nX 0.2 0.2 0.2 0.3\n' "$1" "$1" "$1" "$2" >"$3"; }
+  xyz 1e308 0.5 box.xyz
+  bounded shellpack 2 "box.xyz:2: the Lattice has a side of 1e+308, beyond 1e+100" "$shellpack" structure box.xyz -o out.csv
+  bounded percolate 2 "box.xyz:2: the Lattice has a side of 1e+308" "$percolate" box.xyz --delta 0.1 -o out.vtk
+  xyz 1 1e308 far.xyz
+  bounded percolate 2 "far.xyz:3: a position or radius is beyond 1e+100" "$percolate" far.xyz --delta 0.1 -o out.vtk
+  bounded lbflow 2 "far.xyz:3: a position or radius is beyond 1e+100" "$lbflow" far.xyz --delta 0.25 -o out.csv
+}
 case_rdf_options_bounded() {
   packing_with 's/^# periodic .*/# periodic 1 1 1/' p.off
   bounded shellpack 2 "--bin: --rmax / --bin makes .* bins of g(r)" "$shellpack" analyze p.off --bin 1e-9 -o out.csv
