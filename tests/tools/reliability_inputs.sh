@@ -138,6 +138,13 @@ case_vtk_header_over_the_labelling_limit() {
   truncate -s 2200000000 big.vtk  # sparse: the size of the data, no disk used
   bounded lbflow 2 "big.vtk: DIMENSIONS 2048 1024 1024 make 2^31 - 1 points or more" "$lbflow" big.vtk -o out.csv
 }
+case_rndmesh_level_by_the_mesh_it_makes() {
+  # icosa at level 14 would have been 671 million vertices (tens of GB) before any check
+  bounded rndmesh 2 "--level: level 14 of icosa makes 671088642 vertices, more than 16777216" \
+    "$bin/rndmesh" icosa --level 14 -o out.off
+  bounded rndmesh 2 "--level: level 12 of octa makes" "$bin/rndmesh" octa --level 12 -o out.off
+  "$bin/rndmesh" simple --level 14 -q -o simple.off || fail "simple at level 14 (49,154 vertices)"
+}
 case_refine_too_large() {
   cluster_vtk
   bounded lbflow 2 "--refine: 8 x 8 x 8 voxels of c.vtk at M = 100000 make .* lattice nodes, more than 2\\^40" \

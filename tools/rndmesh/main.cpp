@@ -143,6 +143,9 @@ void run_stats(const Options& o, const std::string& provenance) {
 
 }  // namespace
 
+// The most vertices a subdivided sphere may have (2^24: about 1.2 GB of mesh).
+constexpr long kMaxMeshVertices = 1L << 24;
+
 int main(int argc, char** argv) {
   return cli::run_tool("rndmesh", [&] {
     Options o;
@@ -191,6 +194,14 @@ int main(int argc, char** argv) {
     tool.add_common(*stats, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     tool.parse(argc, argv);
+    // A level is checked by the mesh it makes, before any of it is built: icosa at level 14
+    // would be 671 million vertices (tens of GB), simple at level 14 is 49,154.
+    for (const auto& [sub, scheme] : schemes)
+      if (sub->parsed())
+        tool.check(spheremesh::subdivision_vertex_count(scheme, o.level) <= kMaxMeshVertices, "--level",
+                   fmt::format("level {} of {} makes {} vertices, more than {} (2^24)", o.level,
+                               spheremesh::subdivision_name(scheme), spheremesh::subdivision_vertex_count(scheme, o.level),
+                               kMaxMeshVertices));
     std::vector<std::uint64_t> seeds;
     if (random->parsed()) {
       tool.check(a.t_max >= a.t_min, "--tmax", fmt::format("must be at least --tmin ({} < {})", a.t_max, a.t_min));
