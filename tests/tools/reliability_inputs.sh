@@ -145,6 +145,9 @@ case_rndmesh_level_by_the_mesh_it_makes() {
   bounded rndmesh 2 "--level: level 12 of octa makes" "$bin/rndmesh" octa --level 12 -o out.off
   "$bin/rndmesh" simple --level 14 -q -o simple.off || fail "simple at level 14 (49,154 vertices)"
 }
+case_jam_spheres_bounded_at_the_option() {
+  bounded shellpack 2 "--spheres: N = 2000000000 is more than the 1000000 spheres" "$shellpack" jam -N 2000000000 -o out.xyz
+}
 case_refine_too_large() {
   cluster_vtk
   bounded lbflow 2 "--refine: 8 x 8 x 8 voxels of c.vtk at M = 100000 make .* lattice nodes, more than 2\\^40" \

@@ -56,6 +56,9 @@ void JamCommand::check(cli::Tool& tool) {
              fmt::format("N = {} is too small: a periodic rattler-free jammed packing needs N >= {} "
                          "(with fewer spheres each would touch two images of another)",
                          batch_.spheres, spheres::kMinJammingSpheres));
+  tool.check(batch_.spheres <= spheres::kMaxJammingSpheres, "--spheres",
+             fmt::format("N = {} is more than the {} spheres a packing is made of here", batch_.spheres,
+                         spheres::kMaxJammingSpheres));
   tool.check(p.fire.dt_max >= p.fire.dt, "--fire-dt-max", "must be at least --fire-dt");
   batch_.seeds = tool.seed_list(seeding_);
   batch_.resume = seeding_.resume;
