@@ -148,6 +148,10 @@ case_rndmesh_level_by_the_mesh_it_makes() {
 case_jam_spheres_bounded_at_the_option() {
   bounded shellpack 2 "--spheres: N = 2000000000 is more than the 1000000 spheres" "$shellpack" jam -N 2000000000 -o out.xyz
 }
+case_jam2d_box_bounded_at_the_option() {
+  bounded jam2d 2 "--box: must be at most 1000 sigma" "$bin/jam2d" grow --box 1e300 -o out.xyz
+  bounded jam2d 2 "--box: must be at most 1000 sigma" "$bin/jam2d" sweep --box 1e6 --seeds 1:2 -o out.csv
+}
 case_refine_too_large() {
   cluster_vtk
   bounded lbflow 2 "--refine: 8 x 8 x 8 voxels of c.vtk at M = 100000 make .* lattice nodes, more than 2\\^40" \

@@ -57,6 +57,8 @@ void check_growth(cli::Tool& tool, Options& o) {
   o.growth.adaptive_step = !o.fixed_step;
   o.growth.reset_step = !o.double_step;
   tool.check(o.growth.box >= 2.61 || o.growth.box <= 0, "--box", "must be at least 2.61 sigma (twice the lobe cutoff and skin)");
+  // A colony fills its box: of the order of L^2 cells at jamming. --box 1e300 grew for ever.
+  tool.check(o.growth.box <= 1000, "--box", "must be at most 1000 sigma (a colony jams with of the order of L^2 cells)");
   tool.collect("--contact", [&] { contact_law(o.contact); });
 }
 
