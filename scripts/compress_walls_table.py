@@ -33,7 +33,7 @@ def main(argv):
         table = {}
         for r in rows:
             phi = float(r['phi'])
-            if abs(phi * 20 - round(phi * 20)) < 1e-9 and r['wall_pressure_over_coverage_E'] != 'nan':
+            if abs(phi * 20 - round(phi * 20)) < 1e-9 and r['wall_pressure_over_coverage_E'] not in ('', 'nan'):
                 table[round(phi, 2)] = r
         runs.append((label, p0, table))
     head = '| φ |' + ''.join(f' {l}: P/E | Θ | P/Θ (E) | ⟨Π⟩ (E) | (P/Θ)/⟨Π⟩ |' for l, _, _ in runs)

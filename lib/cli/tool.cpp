@@ -4,6 +4,7 @@
 #include "cli/seed_range.hpp"
 #include "core/errors.hpp"
 #include "io/csv.hpp"
+#include "io/output_paths.hpp"
 #include "io/parse_number.hpp"
 #include "core/version.hpp"
 
@@ -289,10 +290,52 @@ void Tool::collect(const std::string& flag, const std::function<void()>& f) {
   }
 }
 
+CLI::Option* Tool::add_output(CLI::App& where, const std::string& flags, std::string& value, const std::string& help) {
+  auto* option = where.add_option(flags, value, help);
+  outputs_.push_back({&where, flag_name(flags), &value});
+  return option;
+}
+
+void Tool::declare_output(CLI::App& where, const std::string& flag, const std::string& value) {
+  outputs_.push_back({&where, flag, &value});
+}
+
+void Tool::declare_inputs(CLI::App& where, const std::vector<std::string>& paths) {
+  inputs_.push_back({&where, &paths, nullptr});
+}
+
+void Tool::declare_input(CLI::App& where, const std::string& path) { inputs_.push_back({&where, nullptr, &path}); }
+
+namespace {
+// The (sub)command that runs: the deepest App named on the command line (the top-level App
+// when no subcommand was named).
+bool ran(const CLI::App* app) {
+  if (app->get_parent() != nullptr && !app->parsed()) return false;
+  for (const auto* sub : app->get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->parsed()) return false;
+  return true;
+}
+}  // namespace
+
 void Tool::finish_checks() const {
-  if (problems_.empty()) return;
+  auto problems = problems_;
+  std::vector<io::OutputPath> outputs;
+  for (const auto& o : outputs_)
+    if (ran(o.where)) outputs.push_back({o.flag, *o.value});
+  std::vector<std::string> inputs;
+  for (const auto& i : inputs_) {
+    if (!ran(i.where)) continue;
+    if (i.paths) inputs.insert(inputs.end(), i.paths->begin(), i.paths->end());
+    if (i.path) inputs.push_back(*i.path);
+  }
+  for (const auto& p : io::output_path_problems(outputs, inputs)) {
+    bool reported = false;  // one problem per flag
+    for (const auto& q : problems) reported = reported || q.rfind(p.flag + ": ", 0) == 0;
+    if (!reported) problems.push_back(p.flag + ": " + p.message);
+  }
+  if (problems.empty()) return;
   std::string all;
-  for (const auto& p : problems_) all += p + "\n";
+  for (const auto& p : problems) all += p + "\n";
   throw UsageError(all + hint());
 }
 

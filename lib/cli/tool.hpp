@@ -118,6 +118,19 @@ class Tool {
   void check_seed_pattern(std::size_t seed_count, const std::string& flag, const std::string& pattern,
                           const std::string& example);
 
+  // An output file option ('-': stdout), bound to value like app.add_option. finish_checks()
+  // checks every output declared in the (sub)command that was run, before any work
+  // (io/output_paths.hpp): its folder exists and is writable, no two outputs are one file
+  // (compared by device and inode, not by spelling), no output is one of the inputs declared
+  // with declare_inputs; each problem under the output's flag, exit 2.
+  CLI::Option* add_output(CLI::App& where, const std::string& flags, std::string& value, const std::string& help);
+  // Declares an output whose option the tool adds itself (a flag taking several forms).
+  void declare_output(CLI::App& where, const std::string& flag, const std::string& value);
+  // The files the (sub)command reads: no output may be one of them. The vector or string is
+  // read when the checks run (after parse), so bind it as for add_option.
+  void declare_inputs(CLI::App& where, const std::vector<std::string>& paths);
+  void declare_input(CLI::App& where, const std::string& path);
+
   // Parses argv. --help/--version print and end with status 0 (CLI::Success through
   // run_tool). A CLI11 error (unknown option, missing required, extra arguments) and an
   // unknown or missing subcommand are thrown at once as cmp::UsageError with the --help hint;
@@ -147,6 +160,18 @@ class Tool {
   CLI::Option* add_typed(CLI::App& where, const std::string& flags, const std::string& help, const std::string& type,
                          const std::string& default_text, std::function<void(Tool&, const std::string&, const std::string&)> convert);
   std::string hint() const;
+  struct DeclaredOutput {
+    const CLI::App* where;
+    std::string flag;
+    const std::string* value;
+  };
+  struct DeclaredInputs {
+    const CLI::App* where;
+    const std::vector<std::string>* paths;
+    const std::string* path;
+  };
+  std::vector<DeclaredOutput> outputs_;
+  std::vector<DeclaredInputs> inputs_;
   std::string name_;
   std::unique_ptr<CLI::App> app_;
   std::deque<Typed> typed_;  // stable addresses: CLI11 holds pointers to the strings

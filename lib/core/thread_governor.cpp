@@ -3,7 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <mutex>
+#include <utility>
 
 namespace cmp {
 
@@ -31,7 +33,7 @@ constexpr double kExploitPerProbe = 50;
 struct Memory {
   int most = 0, chosen = 0;
   double exploit_seconds = 0;
-  std::chrono::steady_clock::time_point probe_due;
+  double probe_due = 0;  // on the clock of the governor that wrote it
 };
 std::mutex memory_mutex;
 Memory memory;
@@ -42,7 +44,11 @@ void ThreadGovernor::forget() {
   memory = Memory{};
 }
 
-ThreadGovernor::ThreadGovernor(int threads) {
+double ThreadGovernor::steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+ThreadGovernor::ThreadGovernor(int threads, Clock clock) : clock_(std::move(clock)) {
   saved_ = omp_get_max_threads();
   most_ = threads > 0 ? threads : saved_;
   active_ = most_ > 1 && !omp_in_parallel();
@@ -57,8 +63,7 @@ ThreadGovernor::ThreadGovernor(int threads) {
     if (memory.most == most_) {
       chosen_ = memory.chosen;
       exploit_seconds_ = memory.exploit_seconds;
-      first = std::max(std::chrono::duration<double>(memory.probe_due - Clock::now()).count(),
-                       kShortestFirstSeconds);
+      first = std::max(memory.probe_due - now(), kShortestFirstSeconds);
     }
   }
   current_ = saved_;  // start_epoch sets the thread count when it differs from this
@@ -73,8 +78,7 @@ ThreadGovernor::~ThreadGovernor() {
   memory.chosen = chosen_;
   memory.exploit_seconds = exploit_seconds_;
   // Mid-probe, the next governor probes soon; otherwise when this long epoch would have ended.
-  memory.probe_due = probing_ ? Clock::now() : epoch_start_ + std::chrono::duration_cast<Clock::duration>(
-                                                                   std::chrono::duration<double>(epoch_seconds_));
+  memory.probe_due = probing_ ? now() : epoch_start_ + epoch_seconds_;
 }
 
 void ThreadGovernor::start_epoch(int threads, double seconds) {
@@ -82,13 +86,13 @@ void ThreadGovernor::start_epoch(int threads, double seconds) {
   current_ = threads;
   epoch_seconds_ = seconds;
   epoch_ticks_ = 0;
-  epoch_start_ = Clock::now();
+  epoch_start_ = now();
 }
 
 void ThreadGovernor::tick() {
   if (!active_) return;
   ++epoch_ticks_;
-  const double elapsed = std::chrono::duration<double>(Clock::now() - epoch_start_).count();
+  const double elapsed = now() - epoch_start_;
   if (elapsed < epoch_seconds_) return;
   const double rate = static_cast<double>(epoch_ticks_) / elapsed;
   const int other = chosen_ == most_ ? 1 : most_;

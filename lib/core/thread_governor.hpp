@@ -12,15 +12,25 @@
 // wrong guess costs a few per cent at most; a fresh governor's first epoch is 10 ms. The choice carries over
 // from one governor to the next in the process (a run makes many short relaxations), as does
 // the time the next probe is due.
-#include <chrono>
+//
+// Time comes from a clock that can be injected: the default reads std::chrono::steady_clock,
+// and the tests give one whose time advances by the cost they assign each iteration, so the
+// decisions are tested without any dependence on the machine's speed or load.
+#include <functional>
 
 namespace cmp {
 
 class ThreadGovernor {
  public:
+  // A clock in seconds (any origin, never going back).
+  using Clock = std::function<double()>;
+  // The default clock: std::chrono::steady_clock in seconds.
+  static double steady_seconds();
+
   // threads: the most the caller would use (0: omp_get_max_threads()). Inert when that is 1
   // or when called inside a parallel region (the inner regions run on one thread anyway).
-  explicit ThreadGovernor(int threads = 0);
+  // clock: where time comes from (empty: steady_seconds).
+  explicit ThreadGovernor(int threads = 0, Clock clock = {});
   // Restores the thread count it found.
   ~ThreadGovernor();
   ThreadGovernor(const ThreadGovernor&) = delete;
@@ -36,12 +46,13 @@ class ThreadGovernor {
   static void forget();
 
  private:
-  using Clock = std::chrono::steady_clock;
   void start_epoch(int threads, double seconds);
+  double now() const { return clock_ ? clock_() : steady_seconds(); }
 
   int saved_ = 1, most_ = 1, current_ = 1;
   bool active_ = false, probing_ = false;
-  Clock::time_point epoch_start_;
+  Clock clock_;
+  double epoch_start_ = 0;
   double epoch_seconds_ = 0;   // length of the epoch in progress
   double exploit_seconds_ = 0; // length of the next long epoch
   long epoch_ticks_ = 0;

@@ -5,11 +5,12 @@
 // them), then the solver's own binary state
 // (lbm::FlowSolver::save: populations, step count, fingerprint of lattice and settings, and
 // the convergence checks so far):
-//   lbflow checkpoint 1
+//   lbflow checkpoint 2
 //   args <n>
 //   <length> <argument bytes>        (n lines)
-//   state
+//   state fnv1a64
 //   <FlowSolver::save bytes>
+//   \nfnv1a64 <16 hex digits>\n       (checksum of the state: a damaged file is refused, exit 2)
 #include "lbm/flow_solver.hpp"
 
 #include <string>

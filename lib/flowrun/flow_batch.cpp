@@ -25,16 +25,21 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   std::optional<io::CsvWriter> history;
   if (!o.history.empty()) history_out.emplace(o.history);
   std::vector<std::string> stalled;
+  // A VTK field that cannot be written (a full disk) does not discard the table: said after it.
+  std::optional<InputError> vtk_failure;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     auto& c = cases[i];
     FlowOutcome out;
     {
       FlowRun runner(c, o.run);
       out = runner.run();
-      if (!o.vtk_names[i].empty())
-        write_flow_vtk(o.vtk_names[i], runner.field(out),
-                                fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
-                                            "density in lattice units) | {}", c.file, c.refine, provenance));
+      if (!o.vtk_names[i].empty()) try {
+          write_flow_vtk(o.vtk_names[i], runner.field(out),
+                         fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
+                                     "density in lattice units) | {}", c.file, c.refine, provenance));
+        } catch (const InputError& e) {
+          if (!vtk_failure) vtk_failure = e;
+        }
     }
     c.release_lattice();
     if (!csv) {
@@ -67,8 +72,9 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
                                     o.run.convergence.window, io::format_number(o.run.convergence.tol), o.resume_hint));
     }
   }
-  csv_out.commit();
-  if (history_out) history_out->commit();
+  io::commit_in_order({&csv_out, history_out ? &*history_out : nullptr});
+  if (vtk_failure)
+    throw io::with_note(*vtk_failure, "the table was written: " + (o.csv == "-" ? std::string("<stdout>") : o.csv));
   if (!stalled.empty()) {
     std::string message;
     for (const auto& s : stalled) message += (message.empty() ? "" : "\n") + s;

@@ -26,6 +26,16 @@ void require_cluster(const FlowCase& c, const PoreCluster& pc, const char* what)
                                        pc.fluid_voxels, what, pc.components));
 }
 
+// The lattice of voxels x M^3 nodes must fit what is built from it: refine_mask's 2^40 nodes
+// for an image (labelled as voxels), the labelling's 2^31 - 2 for a packing (labelled as
+// nodes). Said for the option before anything is allocated.
+void check_lattice_size(const std::string& file, std::array<int, 3> voxels, int M, double limit, const char* what) {
+  const double nodes = static_cast<double>(voxels[0]) * voxels[1] * voxels[2] * M * M * M;
+  if (nodes > limit)
+    throw UsageError(fmt::format("--refine: {} x {} x {} voxels of {} at M = {} make {:.3g} lattice nodes, more than {}",
+                                 voxels[0], voxels[1], voxels[2], file, M, nodes, what));
+}
+
 }  // namespace
 
 const char* axis_name(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
@@ -38,6 +48,7 @@ FlowCase image_case(const FlowImage& image, int M, int axis, bool periodic_axis)
   c.voxels = image.dims;
   c.refine = M;
   c.axis = axis;
+  check_lattice_size(image.file, image.dims, M, 1099511627776.0, "2^40");
   std::tie(c.node_origin, c.node_spacing) = refined_geometry(image.origin, image.spacing, M);
   c.delta = image.delta;
   c.d0 = image.d0;
@@ -83,6 +94,7 @@ FlowCase sphere_case(const voxel::Packing& p, double delta, int M, int axis, boo
   c.axis = axis;
   const auto grid = voxel::make_grid(p.box, delta * p.d0, {true, true, true});
   c.voxels = grid.dims;
+  check_lattice_size(p.file, grid.dims, M, 2147483646.0, "2^31 - 2 (the labelling of the pore space)");
   std::tie(c.node_origin, c.node_spacing) = refined_geometry(0.5 * grid.spacing, grid.spacing, M);
   c.delta = delta;
   c.d0 = p.d0;
@@ -114,21 +126,17 @@ FlowCase sphere_case(const voxel::Packing& p, double delta, int M, int axis, boo
 
 FlowCase read_flow_case(const std::string& path, const InputOptions& o) {
   if (!o.dims.empty()) return image_case(read_raw_image(path, parse_dims(o.dims)), o.refine, o.axis, o.periodic_axis);
-  std::optional<io::InputFormat> format;
-  if (path != "-") {
-    io::Input probe(path);
-    format = probe.format();
-  }
-  if (path == "-" || format == io::InputFormat::vtk)
-    return image_case(read_vtk_image(path), o.refine, o.axis, o.periodic_axis);
+  // The format from the content, for a file and for standard input alike (docs/formats.md).
+  io::Input input(path);
+  const auto format = input.format();
+  if (format == io::InputFormat::vtk) return image_case(read_vtk_image(input), o.refine, o.axis, o.periodic_axis);
   if (format == io::InputFormat::xyz) {
     if (!(o.delta > 0))
       throw UsageError(path + ": a sphere packing needs --delta (the voxel side in D0; the node side is delta/M)");
-    auto packings = voxel::read_packings(path, {o.scale, o.d0});
+    auto packings = voxel::read_packings(input, {o.scale, o.d0});
     if (packings.size() != 1) throw InputError(path, 0, "holds several frames: give lbflow one packing per file");
     return sphere_case(packings.front(), o.delta, o.refine, o.axis, o.periodic_axis);
   }
-  io::Input input(path);
   input.fail_format("a VTK image (STRUCTURED_POINTS), a sphere packing (extended XYZ), or raw bytes with --dims");
 }
 

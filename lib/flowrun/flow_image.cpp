@@ -10,12 +10,15 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
+#include <variant>
 
 namespace cmp::flowrun {
 
 namespace {
 
-constexpr unsigned long long kMaxVoxels = 1ULL << 40;
+// The labelling of the pore space (voxel::label_components) numbers voxels in int32.
+constexpr unsigned long long kMaxVoxels = 2147483646ULL;
 
 template <io::VtkScalar T>
 FlowImage from_vtk(const io::VoxelImage<T>& image, const std::string& path, long data_line) {
@@ -68,27 +71,36 @@ std::array<int, 3> parse_dims(const std::string& text) {
     at = x + 1;
   }
   if (static_cast<unsigned long long>(dims[0]) * dims[1] * dims[2] > kMaxVoxels)
-    throw UsageError("--dims: " + text + " makes more than 2^40 voxels");
+    throw UsageError("--dims: " + text + " makes 2^31 - 1 voxels or more, more than the labelling of the pore space "
+                     "takes");
   return dims;
 }
 
-FlowImage read_vtk_image(const std::string& path) {
-  if (path == "-") {  // one pass only: percolate's type
-    io::Input input(path);
-    return from_vtk(io::read_vtk<std::uint8_t>(input), path, 0);
+FlowImage read_vtk_image(io::Input& input) {
+  const auto& path = input.path();
+  // The header first, from a file: the labelling's limit is said before the data are read.
+  std::optional<io::VtkInfo> info;
+  if (path != "-") {
+    info = io::read_vtk_info(path);
+    if (info->size() > kMaxVoxels)
+      throw InputError(path, 0, fmt::format("DIMENSIONS {} {} {} make 2^31 - 1 points or more, more than the labelling "
+                                            "of the pore space takes", info->dims[0], info->dims[1], info->dims[2]));
   }
-  const auto info = io::read_vtk_info(path);
-  const auto titled = [&](FlowImage f) {
-    f.title = info.title;
-    return f;
-  };
-  if (info.type == "unsigned_char") return titled(from_vtk(io::read_vtk<std::uint8_t>(path), path, info.data_line));
-  if (info.type == "int") return titled(from_vtk(io::read_vtk<std::int32_t>(path), path, info.data_line));
-  if (info.type == "float") return titled(from_vtk(io::read_vtk<float>(path), path, info.data_line));
-  if (info.type == "double") return titled(from_vtk(io::read_vtk<double>(path), path, info.data_line));
-  throw InputError(path, info.scalars_line,
-                   fmt::format("scalar type '{}' is not supported: expected unsigned_char, int, float or double",
-                               info.type));
+  auto image = std::visit(
+      [&](const auto& im) {
+        if (im.size() > kMaxVoxels)
+          throw InputError(path, 0, fmt::format("DIMENSIONS {} {} {} make 2^31 - 1 points or more, more than the "
+                                                "labelling of the pore space takes", im.dims[0], im.dims[1], im.dims[2]));
+        return from_vtk(im, path, info ? info->data_line : 0);
+      },
+      io::read_vtk_any(input));
+  if (info) image.title = info->title;
+  return image;
+}
+
+FlowImage read_vtk_image(const std::string& path) {
+  io::Input input(path);
+  return read_vtk_image(input);
 }
 
 FlowImage read_raw_image(const std::string& path, std::array<int, 3> dims) {
@@ -101,10 +113,19 @@ FlowImage read_raw_image(const std::string& path, std::array<int, 3> dims) {
   out.file = path;
   out.format = "raw";
   out.dims = dims;
-  out.fluid.resize(want);
+  // From a pipe the image grows as the bytes arrive: 2 bytes for --dims 1000x1000x1000 are
+  // refused without allocating a gigabyte first.
   auto& in = input.stream();
-  in.read(reinterpret_cast<char*>(out.fluid.data()), static_cast<std::streamsize>(want));
-  const auto got = static_cast<unsigned long long>(in.gcount());
+  constexpr unsigned long long kChunk = 1ULL << 24;
+  unsigned long long got = 0;
+  while (got < want) {
+    const auto m = std::min(kChunk, want - got);
+    out.fluid.resize(got + m);
+    in.read(reinterpret_cast<char*>(out.fluid.data() + got), static_cast<std::streamsize>(m));
+    const auto read = static_cast<unsigned long long>(in.gcount());
+    got += read;
+    if (read < m) break;
+  }
   if (got < want) throw InputError(path, 0, fmt::format("holds {} bytes, --dims {} needs {}", got, name, want));
   if (in.peek() != std::char_traits<char>::eof())
     throw InputError(path, 0, fmt::format("holds more than the {} bytes --dims {} needs", want, name));

@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+namespace cmp::io {
+class Input;
+}
+
 namespace cmp::flowrun {
 
 struct FlowImage {
@@ -43,10 +47,14 @@ std::array<int, 3> parse_dims(const std::string& text);
 // truncated data, ...), for another scalar type ("scalar type 'short' is not supported"), for
 // a non-finite value, and for field data delta/d0/scale/porosity that are not positive
 // (porosity: in [0, 1]).
+// Any scalar type from standard input too (one pass); more than 2^31 - 2 points (the most the
+// labelling takes) are refused from the header of a file, before its data are read.
 FlowImage read_vtk_image(const std::string& path);
+FlowImage read_vtk_image(io::Input& input);
 
 // Reads nx*ny*nz raw bytes (x fastest; non-zero = fluid) from path ("-" = stdin). Throws
-// cmp::InputError(path, 0, "holds N bytes, --dims AxBxC needs M") when the size differs.
+// cmp::InputError(path, 0, "holds N bytes, --dims AxBxC needs M") when the size differs (a
+// file's size is compared first; from a pipe memory grows as the bytes arrive).
 FlowImage read_raw_image(const std::string& path, std::array<int, 3> dims);
 
 }  // namespace cmp::flowrun

@@ -1,6 +1,7 @@
 #include "io/atomic_output.hpp"
 
 #include "core/errors.hpp"
+#include "io/output_paths.hpp"
 
 #include <atomic>
 #include <cerrno>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -95,29 +97,15 @@ TemporaryPath::TemporaryPath(const std::string& path, Kind kind) : slot_(registe
 TemporaryPath::~TemporaryPath() { unregister_temporary(slot_); }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
+  // Throws when the target cannot be written (io/output_paths.hpp: the check every program
+  // also makes on all its outputs before any work).
+  check_writable(path_);
   if (path_ == "-") return;
-  if (path_.empty()) throw InputError(path_, 0, "cannot write: empty file name");
-  const std::filesystem::path target(path_);
-  const auto name = target.filename().string();
-  if (name.empty() || name == "." || name == "..")
-    throw InputError(path_, 0, "cannot write: not a file name");
   // A device, pipe or socket (/dev/null, /dev/stdout, a FIFO, bash's >(...) as /dev/fd/63) is
   // written in place: renaming a finished temporary onto it would replace /dev/null by a
   // regular file (as root) or fail, and a stream has no half-written state to hide anyway.
   struct stat existing {};
-  if (::stat(path_.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) {
-    if (S_ISDIR(existing.st_mode)) throw InputError(path_, 0, "cannot write: " + errno_text(EISDIR));
-    if (::access(path_.c_str(), W_OK) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
-    in_place_ = true;
-    return;
-  }
-  const auto dir = target.parent_path().string();
-  // The temporary comes at the first write; say now if it could not be made.
-  const char* folder = dir.empty() ? "." : dir.c_str();
-  struct stat st {};
-  if (::stat(folder, &st) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
-  if (!S_ISDIR(st.st_mode)) throw InputError(path_, 0, "cannot write: " + errno_text(ENOTDIR));
-  if (::access(folder, W_OK | X_OK) != 0) throw InputError(path_, 0, "cannot write: " + errno_text(errno));
+  in_place_ = ::stat(path_.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode);
 }
 
 void AtomicOutput::create_temporary() {
@@ -201,6 +189,30 @@ void AtomicOutput::commit() {
   registration_ = -1;
   temp_path_.clear();
   committed_ = true;
+}
+
+void commit_in_order(std::initializer_list<AtomicOutput*> outputs) {
+  std::optional<InputError> first;
+  std::string written;
+  for (auto* out : outputs) {
+    if (!out) continue;
+    try {
+      out->commit();
+      written += (written.empty() ? "" : ", ") + (out->path() == "-" ? std::string("<stdout>") : out->path());
+    } catch (const InputError& e) {
+      if (!first) first = e;
+    }
+  }
+  if (!first) return;
+  if (written.empty()) throw *first;
+  throw with_note(*first, "the other outputs were written: " + written);
+}
+
+InputError with_note(const InputError& e, const std::string& note) {
+  // The message without its "file:line: " prefix, which the new error adds again.
+  const std::string located = e.what();
+  const std::size_t prefix = std::string(InputError(e.file(), e.line(), "").what()).size();
+  return InputError(e.file(), e.line(), located.substr(prefix) + " (" + note + ")");
 }
 
 }  // namespace cmp::io

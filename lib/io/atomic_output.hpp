@@ -6,9 +6,14 @@
 // run can remove them from a signal handler (cli::run_tool installs one for SIGINT and
 // SIGTERM). Other temporaries a tool makes (a folder for gnuplot's output, a scratch file)
 // join the registry through TemporaryPath.
+#include <initializer_list>
 #include <memory>
 #include <ostream>
 #include <string>
+
+namespace cmp {
+class InputError;
+}
 
 namespace cmp::io {
 
@@ -43,6 +48,15 @@ class AtomicOutput {
   bool committed_ = false;
   bool in_place_ = false;  // a device or pipe: no temporary, no rename
 };
+
+// Commits outputs in the order given (the primary result first), each even when an earlier one
+// failed, so that a secondary output that cannot be written (a full disk, /dev/full) never
+// discards a result already computed; null pointers are skipped. Then throws the first
+// failure, saying which outputs were written all the same:
+//   "/dev/full: write error: No space left on device (the other outputs were written: o.csv)".
+void commit_in_order(std::initializer_list<AtomicOutput*> outputs);
+// The error e with " (note)" added to its message, same file and line.
+cmp::InputError with_note(const cmp::InputError& e, const std::string& note);
 
 // A path to remove if the process is interrupted, registered for as long as this object
 // lives (it removes nothing itself when destroyed: the owner removes or renames its file).

@@ -5,30 +5,69 @@
 //   <magic line, e.g. "lbflow checkpoint 1">
 //   args <n>
 //   <length> <argument bytes>        (n lines)
-//   state
+//   state                            ("state fnv1a64" when a checksum follows the state)
 //   <binary state>
-// Write it through io::AtomicOutput (a run killed while writing leaves the previous one).
+//   \nfnv1a64 <16 hex digits>\n       (the checksum: 64-bit FNV-1a of the state's bytes)
+// Write it with io::CheckpointOutput (atomic: a run killed while writing leaves the previous
+// one; the checksum added at commit), or through io::AtomicOutput and write_checkpoint_header
+// (no checksum). read_checkpoint_header verifies the checksum of a file that has one before
+// a byte of the state is used: one flipped bit is "checkpoint damaged", exit 2.
 #include "core/errors.hpp"
+#include "core/fnv1a.hpp"
+#include "io/atomic_output.hpp"
 
 #include <cstdint>
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <streambuf>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 namespace cmp::io {
 
-// Writes the header up to and including the "state" line.
+// Writes the header up to and including the "state" line (no checksum follows).
 void write_checkpoint_header(std::ostream& out, const std::string& magic, const std::vector<std::string>& args);
+
+// A checkpoint with a checksum of its state: the header at construction, the state written to
+// stream(), then commit() appends the checksum line and renames the file into place
+// (io::AtomicOutput). Throws cmp::InputError(path, 0, ...) as AtomicOutput does.
+class CheckpointOutput {
+ public:
+  CheckpointOutput(const std::string& path, const std::string& magic, const std::vector<std::string>& args);
+  ~CheckpointOutput();
+  CheckpointOutput(const CheckpointOutput&) = delete;
+  CheckpointOutput& operator=(const CheckpointOutput&) = delete;
+  std::ostream& stream() { return stream_; }
+  void commit();
+
+ private:
+  // Passes bytes to the file's stream buffer and hashes them on the way.
+  class HashingBuffer : public std::streambuf {
+   public:
+    void attach(std::streambuf* target) { target_ = target; }
+    Fnv1a hash;
+   protected:
+    int_type overflow(int_type c) override;
+    std::streamsize xsputn(const char* s, std::streamsize n) override;
+    int sync() override { return target_->pubsync(); }
+   private:
+    std::streambuf* target_ = nullptr;
+  };
+  AtomicOutput out_;
+  HashingBuffer buffer_;
+  std::ostream stream_;
+};
 
 // Reads the header, leaving `in` at the first byte of the state, and returns the arguments.
 // Throws cmp::InputError(path, line, ...) when the first line is not `magic` ("not <what>
 // (expected '<magic>' on the first line)", what e.g. "an lbflow checkpoint") or the header is
-// malformed.
+// malformed, and cmp::InputError(path, 0, "checkpoint damaged: ...") when the file has a
+// checksum and the state's bytes do not match it (or it is cut short). With require_checksum,
+// a file without one is refused too.
 std::vector<std::string> read_checkpoint_header(std::istream& in, const std::string& path, const std::string& magic,
-                                                const std::string& what);
+                                                const std::string& what, bool require_checksum = false);
 
 // The file opened for reading in binary; cmp::InputError(path, 0, "cannot open the checkpoint").
 std::ifstream open_checkpoint(const std::string& path);

@@ -183,16 +183,27 @@ void CsvWriter::meta(const std::string& key, const std::string& value) {
 void CsvWriter::header(const std::vector<std::string>& columns) {
   if (has_header_) throw std::logic_error("CsvWriter::header called twice");
   if (columns.empty()) throw std::invalid_argument("CsvWriter::header: no columns");
-  has_header_ = true;
   width_ = columns.size();
   row(columns);
+  has_header_ = true;
+  columns_ = columns;
 }
 
 void CsvWriter::row(const std::vector<std::string>& cells) {
-  if (!has_header_) throw std::logic_error("CsvWriter::row before the header");
+  if (width_ == 0) throw std::logic_error("CsvWriter::row before the header");
   if (cells.size() != width_)
     throw std::invalid_argument(
         fmt::format("CsvWriter::row: {} cells, the header has {}", cells.size(), width_));
+  if (has_header_) {
+    ++rows_;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const auto& c = cells[i];
+      const bool nan = c == "nan" || c == "-nan", inf = c == "inf" || c == "-inf";
+      if (nan || (inf && !infinity_allowed_))
+        throw ComputationError(fmt::format("{} became {} (row {} of the table): a result file holds finite numbers only",
+                                           columns_[i], c, rows_));
+    }
+  }
   // A one-column row holding "" would be a blank line, which readers skip.
   if (width_ == 1 && cells[0].empty()) {
     out_ << "\"\"\n";

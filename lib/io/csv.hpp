@@ -46,9 +46,17 @@ CsvTable read_csv(const std::string& path);
 CsvTable read_csv(Input& input);
 
 // Streams a table: meta lines, then the header, then rows (all rows same width as header).
+//
+// Every number written is finite (docs/conventions.md): a cell that reads as a non-finite
+// number ("nan", "inf", "-inf", as format_number writes them) is refused with
+// cmp::ComputationError naming its column, so the run fails (exit 1) instead of writing a table
+// its readers refuse. A table whose format documents infinite values (kcfit's undefined
+// standard errors, jam2d's P0 = inf for no feedback) says so with allow_infinity(); NaN is
+// refused always.
 class CsvWriter {
  public:
   explicit CsvWriter(std::ostream& out) : out_(out) {}
+  void allow_infinity() { infinity_allowed_ = true; }
   // "# key=value"; only before header(). Line breaks in value become spaces. Throws
   // std::logic_error after the header, std::invalid_argument for an empty key or one holding
   // '=', '#' or a line break.
@@ -63,6 +71,9 @@ class CsvWriter {
   std::ostream& out_;
   std::size_t width_ = 0;
   bool has_header_ = false;
+  bool infinity_allowed_ = false;
+  std::vector<std::string> columns_;
+  long rows_ = 0;
 };
 
 // Shortest representation that parses back to the same double ("0.1", "1e-08", "3", "-0");

@@ -74,8 +74,12 @@ class CommentParser {
     for (int i = 0; i < 3; ++i) {
       L[i] = parse_double(w[i + 1], in_.path(), in_.line_number(), "a box side");
       if (!(L[i] > 0)) in_.fail("box side " + quote_token(w[i + 1]) + " is not positive");
+      if (L[i] > kMaxCoordinate)
+        in_.fail(fmt::format("box side {} is beyond {:g}: the volumes and distances made from it would overflow",
+                             quote_token(w[i + 1]), kMaxCoordinate));
     }
     off_.packing.box = L;
+    off_.packing.box_line = in_.line_number();
   }
 
   void periodic(const std::vector<std::string_view>& w) {
@@ -246,8 +250,12 @@ OffFile read_off(Input& input) {
     if (!vertex_fields_ok(dialect, tokens.size()))
       in.fail(fmt::format("expected a vertex '{}', got {} fields", vertex_form(dialect),
                           tokens.size()));
-    for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t k = 0; k < 3; ++k) {
       xyz.push_back(parse_double(tokens[k], file, in.line_number(), "a coordinate"));
+      if (std::abs(xyz.back()) > kMaxCoordinate)
+        in.fail(fmt::format("coordinate {} is beyond +-{:g}: the distances, areas and volumes made from it would "
+                            "overflow", quote_token(tokens[k]), kMaxCoordinate));
+    }
     for (std::size_t k = 3; k < tokens.size(); ++k)
       parse_double(tokens[k], file, in.line_number(), "a number (normal, colour or texture)");
   }

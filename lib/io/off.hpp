@@ -22,10 +22,14 @@
 #include <string>
 #include <vector>
 
+// kMaxCoordinate (io/parse_number.hpp): the largest coordinate or box side the reader takes.
+#include "io/parse_number.hpp"
+
 namespace cmp::io {
 
 struct PackingInfo {
   std::optional<Eigen::Vector3d> box;      // # box Lx Ly Lz
+  long box_line = 0;                       // its line (for messages)
   std::array<bool, 3> periodic{false, false, false};
   std::vector<int> shell_vertex_counts;    // # shells K n1 ... nK (empty: not a packing)
 };

@@ -8,6 +8,10 @@
 
 namespace cmp::io {
 
+// The largest magnitude of a coordinate, box side or radius the readers of geometry take (OFF,
+// extended XYZ sphere packings): cubes of differences of such numbers (volumes) stay finite.
+inline constexpr double kMaxCoordinate = 1e100;
+
 // True and out set when token is a whole finite double ("1", "-0.5", "+1e-8", ".5").
 // NaN, Inf, hexadecimal, overflow and underflow to zero (e.g. "1e-400") give false.
 bool try_parse_double(std::string_view token, double& out);

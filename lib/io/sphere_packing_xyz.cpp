@@ -141,6 +141,11 @@ SpherePackingFrame sphere_packing_from_frame(const XyzFrame& frame, PbcRule rule
     frame.fail("the Lattice is not an orthorhombic box (off-diagonal entries are not zero; "
                "only axis-aligned boxes are supported)");
   if (!(a(0, 0) > 0 && a(1, 1) > 0 && a(2, 2) > 0)) frame.fail("the Lattice has a side that is not positive");
+  // Sizes made from the box (its volume, cell lists, voxel grids) must stay finite doubles.
+  if (!(a.diagonal().maxCoeff() <= kMaxCoordinate))
+    fail_at(frame, frame.line + 1,  // the comment line that holds the Lattice
+            fmt::format("the Lattice has a side of {:g}, beyond {:g}: the volumes and distances made from it "
+                        "would overflow", a.diagonal().maxCoeff(), kMaxCoordinate));
   if (rule == PbcRule::require_all && !(frame.pbc[0] && frame.pbc[1] && frame.pbc[2]))
     frame.fail("pbc is not \"T T T\": a periodic packing is needed");
   SpherePackingFrame p;
@@ -155,10 +160,15 @@ SpherePackingFrame sphere_packing_from_frame(const XyzFrame& frame, PbcRule rule
   p.radii = Eigen::Map<const Eigen::VectorXd>(rc.values.data(), static_cast<Eigen::Index>(rc.values.size()));
   if (p.size() == 0) frame.fail("the frame has no spheres");
   const long first_atom_line = frame.line + 2;
-  for (int i = 0; i < p.size(); ++i)
+  for (int i = 0; i < p.size(); ++i) {
     if (!(p.radii[i] > 0) || !std::isfinite(p.radii[i]))
       fail_at(frame, first_atom_line + i,
               fmt::format("radius {} is not a positive number (column '{}')", p.radii[i], rc.name));
+    if (!(p.radii[i] <= kMaxCoordinate) || !(p.centres.row(i).cwiseAbs().maxCoeff() <= kMaxCoordinate))
+      fail_at(frame, first_atom_line + i,
+              fmt::format("a position or radius is beyond {:g}: the distances and volumes made from it would "
+                          "overflow", kMaxCoordinate));
+  }
   const long dup = first_duplicate(p.centres, p.radii, p.box, p.pbc);
   if (dup >= 0)
     fail_at(frame, first_atom_line + dup,

@@ -122,6 +122,8 @@ void read_field(LineReader& in, const std::vector<std::string_view>& head, VtkIn
           in.fail(fmt::format("unexpected end of file in the values of FIELD array {}",
                               quote_token(name)));
         if (done == 0) first = decode_big_endian(chunk, type);
+        if (done == 0 && !std::isfinite(first))
+          in.fail(fmt::format("FIELD array {} holds {}: its values must be finite", quote_token(name), first));
         done += n;
       }
     } else {
@@ -133,6 +135,8 @@ void read_field(LineReader& in, const std::vector<std::string_view>& head, VtkIn
           if (got == count)
             in.fail(fmt::format("more than the {} values of FIELD array {}", count, quote_token(name)));
           const double v = parse_double(token, in.path(), in.line_number(), "a FIELD value");
+          if (!std::isfinite(v))
+            in.fail(fmt::format("FIELD array {} holds {}: its values must be finite", quote_token(name), token));
           if (got++ == 0) first = v;
         }
       }
@@ -161,6 +165,7 @@ VtkInfo parse_header(LineReader& in) {
     in.fail("dataset " + quote_token(t[1]) + " is not supported: expected STRUCTURED_POINTS");
 
   bool have_dims = false, have_origin = false, have_spacing = false;
+  long spacing_line = 0;
   unsigned long long points = 0;
   while (true) {
     t = keyword_line(in, "POINT_DATA");
@@ -189,10 +194,21 @@ VtkInfo parse_header(LineReader& in) {
       info.origin = three_numbers(in, t, "an origin coordinate", false);
     } else if (key == "spacing" || key == "aspect_ratio") {  // ASPECT_RATIO: VTK 1.0/2.0
       once(have_spacing);
+      spacing_line = in.line_number();
       info.spacing = three_numbers(in, t, "a spacing", true);
     } else if (key == "field") {
       read_field(in, t, info);
     } else if (key == "point_data") {
+      // The image's extent (and the areas made from the spacing, such as a permeability in
+      // the file's units) must be finite numbers: SPACING 1e308 passes each value alone.
+      for (int i = 0; have_spacing && i < 3; ++i) {
+        const double extent = std::abs(info.origin[i]) + static_cast<double>(info.dims[i]) * info.spacing[i];
+        if (!std::isfinite(extent) || !std::isfinite(info.spacing[i] * info.spacing[i]))
+          throw InputError(in.path(), spacing_line,
+                           fmt::format("SPACING {} with DIMENSIONS {} {} {}: the image's extent (or the spacing "
+                                       "squared) overflows a double",
+                                       info.spacing[i], info.dims[0], info.dims[1], info.dims[2]));
+      }
       break;
     } else if (key == "cell_data") {
       in.fail("CELL_DATA is not supported: expected POINT_DATA (values on the grid points)");
@@ -303,12 +319,29 @@ void check_image(const VoxelImage<T>& image) {
     if (name.empty() || name.find_first_of(" \t\r\n\v\f") != std::string::npos)
       throw std::invalid_argument("write_vtk: field data name '" + name +
                                   "' is empty or holds whitespace");
-    if (!std::isfinite(value))
-      throw std::invalid_argument("write_vtk: field data '" + name + "' is not finite");
+    if (!std::isfinite(value))  // a computed quantity went wrong: the run fails, exit 1
+      throw ComputationError(fmt::format("field data '{}' of the VTK image became {}: a result file holds finite "
+                                         "numbers only", name, value));
   }
 }
 
 }  // namespace
+
+// The values after a header parse_header has read.
+template <class T>
+VoxelImage<T> read_body(LineReader& in, const VtkInfo& info) {
+  VoxelImage<T> image;
+  image.dims = info.dims;
+  image.origin = info.origin;
+  image.spacing = info.spacing;
+  image.name = info.name;
+  image.field_data = info.field_data;
+  if (info.binary)
+    read_binary(in, info, image.data);
+  else
+    read_ascii(in, info, image.data);
+  return image;
+}
 
 VtkInfo read_vtk_info(const std::string& path) {
   LineReader in(path);
@@ -330,17 +363,19 @@ VoxelImage<T> read_vtk(Input& input) {
     throw InputError(
         path, info.scalars_line,
         fmt::format("scalar type is '{}', expected '{}'", info.type, vtk_type_name<T>()));
-  VoxelImage<T> image;
-  image.dims = info.dims;
-  image.origin = info.origin;
-  image.spacing = info.spacing;
-  image.name = info.name;
-  image.field_data = info.field_data;
-  if (info.binary)
-    read_binary(in, info, image.data);
-  else
-    read_ascii(in, info, image.data);
-  return image;
+  return read_body<T>(in, info);
+}
+
+AnyVoxelImage read_vtk_any(Input& input) {
+  LineReader in(input);
+  const auto info = parse_header(in);
+  if (info.type == "unsigned_char") return read_body<std::uint8_t>(in, info);
+  if (info.type == "int") return read_body<std::int32_t>(in, info);
+  if (info.type == "float") return read_body<float>(in, info);
+  if (info.type == "double") return read_body<double>(in, info);
+  throw InputError(in.path(), info.scalars_line,
+                   fmt::format("scalar type '{}' is not supported: expected unsigned_char, int, float or double",
+                               info.type));
 }
 
 template <VtkScalar T>

@@ -23,6 +23,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace cmp::io {
@@ -97,7 +98,8 @@ struct VtkInfo {
 // missing version line, an unknown ASCII/BINARY line, another DATASET, dimensions that are not
 // 3 positive integers, a spacing that is not 3 positive numbers, POINT_DATA disagreeing with
 // the dimensions, CELL_DATA, a missing LOOKUP_TABLE or more than one component, dimensions
-// whose product (checked in 64 bits) passes 2^40 points, a malformed FIELD block.
+// whose product (checked in 64 bits) passes 2^40 points, a malformed FIELD block or a FIELD
+// value that is not finite, a SPACING whose extent (or square) overflows a double.
 VtkInfo read_vtk_info(const std::string& path);
 
 class Input;
@@ -113,12 +115,19 @@ VoxelImage<T> read_vtk(const std::string& path);
 template <VtkScalar T>
 VoxelImage<T> read_vtk(Input& input);
 
+// An image of any of the scalar types, read in one pass (standard input): the type is the
+// one its SCALARS line names.
+using AnyVoxelImage =
+    std::variant<VoxelImage<std::uint8_t>, VoxelImage<std::int32_t>, VoxelImage<float>, VoxelImage<double>>;
+AnyVoxelImage read_vtk_any(Input& input);
+
 // Writes the image as BINARY atomically (see AtomicOutput; "-" = stdout). title is cut to
 // 255 characters, line breaks become spaces. Converts to big-endian chunk by chunk, so memory
 // stays at the image plus 64k values. Throws std::invalid_argument when data.size() is not
 // nx*ny*nz, a dimension is < 1, spacing is not positive and finite, origin is not finite,
-// name or a field_data name is empty or holds whitespace, or a field_data value is not
-// finite; cmp::InputError(path, 0, ...) when the file cannot be written.
+// name or a field_data name is empty or holds whitespace; cmp::ComputationError (exit 1: a
+// computed quantity went wrong) when a field_data value is not finite; cmp::InputError(path,
+// 0, ...) when the file cannot be written.
 template <VtkScalar T>
 void write_vtk(const std::string& path, const VoxelImage<T>& image, const std::string& title);
 

@@ -160,10 +160,8 @@ void run_analyze_batch(const AnalyzeBatch& b, const std::string& provenance) {
   if (rdf_out) write_analysis_rdf(rdf_out->stream(), all, provenance);
   if (shells_out) write_analysis_shells(shells_out->stream(), all, provenance);
   if (contacts_out) write_analysis_contacts(contacts_out->stream(), all, provenance);
-  out.commit();
-  if (rdf_out) rdf_out->commit();
-  if (shells_out) shells_out->commit();
-  if (contacts_out) contacts_out->commit();
+  io::commit_in_order({&out, rdf_out ? &*rdf_out : nullptr, shells_out ? &*shells_out : nullptr,
+                       contacts_out ? &*contacts_out : nullptr});
   for (const auto& a : all)
     for (const auto& w : a.warnings) std::cerr << "shellpack: warning: " << w << "\n";
   if (!b.quiet)

@@ -189,7 +189,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     for (double e : r.term_energies) s += "," + f(e);
     if (o.walls)
       s += "," + f(r.wall_pressure) + "," + f(r.coverage) + "," +
-           f(r.coverage > 0 ? r.wall_pressure / r.coverage : std::numeric_limits<double>::quiet_NaN());
+           (r.coverage > 0 ? f(r.wall_pressure / r.coverage) : std::string());  // empty while undefined
     s += "," + f(r.relax.residual) + "," + std::to_string(r.relax.iterations) + "," +
          std::to_string(r.relax.volume_updates) + "," + shell::relax_stop_name(r.relax.stop);
     if (job.timings) s += "," + f(seconds);

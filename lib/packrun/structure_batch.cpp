@@ -34,9 +34,7 @@ void run_structure_batch(const StructureBatch& b, const std::string& provenance)
   spheres::write_rdf_table(out.stream(), rdf, pooled, packings.size(), provenance);
   if (forces_out) spheres::write_force_distribution_table(forces_out->stream(), pooled, b.force_bins, provenance);
   if (summary_out) spheres::write_contact_summary_table(summary_out->stream(), labels, stats, provenance);
-  out.commit();
-  if (forces_out) forces_out->commit();
-  if (summary_out) summary_out->commit();
+  io::commit_in_order({&out, forces_out ? &*forces_out : nullptr, summary_out ? &*summary_out : nullptr});
   if (!b.quiet)
     for (std::size_t k = 0; k < stats.size(); ++k)
       std::cerr << "shellpack: " << spheres::contact_summary(labels[k], stats[k]) << "\n";

@@ -82,6 +82,9 @@ inline constexpr double kMaxPolydispersity = 0.25;
 // Smallest N accepted: below it a sphere at jamming is wider than half the box and would touch
 // two images of another, and the minimum image convention (and the thesis's model) breaks.
 inline constexpr int kMinJammingSpheres = 10;
+// The most spheres a jammed packing is made of: said at the option (-N), before anything is
+// allocated (2e9 spheres ended in "out of memory" after the allocation was tried).
+inline constexpr int kMaxJammingSpheres = 1000000;
 
 // What the progress callback sees after every size change.
 struct JammingProgressInfo {

@@ -5,6 +5,8 @@
 #include "spheres/hertz_spheres.hpp"
 #include "spheres/rattlers.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -21,8 +23,9 @@ std::vector<long> pair_histogram(const SpherePacking& p, double bin_width, int b
   const double d = p.mean_diameter(), reach = bins * bin_width * d;
   std::vector<long> counts(static_cast<std::size_t>(bins), 0);
   auto add = [&](double r) {
-    const int b = static_cast<int>(r / d / bin_width);
-    if (b < bins) ++counts[b];
+    // Compared as a double first: a huge (or NaN) distance is no int.
+    const double b = r / d / bin_width;
+    if (b < bins) ++counts[static_cast<int>(b)];
   };
   neighbours::Box box;
   box.lengths = p.box;
@@ -35,7 +38,12 @@ std::vector<long> pair_histogram(const SpherePacking& p, double bin_width, int b
   }
   // Every image within reach: ordered pairs (i, j, shift) except i = j unshifted, halved.
   Eigen::Vector3i images;
-  for (int a = 0; a < 3; ++a) images[a] = static_cast<int>(std::ceil(reach / p.box[a])) + 1;
+  for (int a = 0; a < 3; ++a) {
+    if (!(reach / p.box[a] <= kMaxRdfImages))
+      throw UsageError(fmt::format("g(r) range reaches {:.3g} box lengths, more than {}: lower --rmax", reach / p.box[a],
+                                   kMaxRdfImages));
+    images[a] = static_cast<int>(std::ceil(reach / p.box[a])) + 1;
+  }
   std::vector<long> ordered(static_cast<std::size_t>(bins), 0);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
@@ -45,8 +53,8 @@ std::vector<long> pair_histogram(const SpherePacking& p, double bin_width, int b
           for (int sz = -images[2]; sz <= images[2]; ++sz) {
             if (i == j && sx == 0 && sy == 0 && sz == 0) continue;
             const double r = (d0 + Eigen::Vector3d(sx * p.box[0], sy * p.box[1], sz * p.box[2])).norm();
-            const int b = static_cast<int>(r / d / bin_width);
-            if (b < bins) ++ordered[b];
+            const double b = r / d / bin_width;
+            if (b < bins) ++ordered[static_cast<int>(b)];
           }
     }
   for (int b = 0; b < bins; ++b) counts[b] = ordered[b] / 2;
@@ -58,6 +66,9 @@ std::vector<long> pair_histogram(const SpherePacking& p, double bin_width, int b
 RadialDistribution radial_distribution(const std::vector<SpherePacking>& packings, double bin_width, double r_max) {
   if (!(bin_width > 0)) throw UsageError("g(r) bin width must be positive");
   if (!(r_max > bin_width)) throw UsageError("g(r) range must exceed one bin");
+  // Checked as a double before it becomes an int (the options check it first, naming them).
+  if (!(r_max / bin_width <= kMaxRdfBins))
+    throw UsageError(fmt::format("g(r) range over bin width makes more than {} bins", kMaxRdfBins));
   const int bins = static_cast<int>(std::floor(r_max / bin_width + 1e-9));
   RadialDistribution rdf;
   rdf.bin_width = bin_width;

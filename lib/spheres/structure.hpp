@@ -21,6 +21,10 @@ struct RadialDistribution {
 // the box: O(N) per packing by linked cells. Beyond (small boxes, e.g. N = 50 where L/2 is
 // 1.5 diameters) every periodic image is counted, O(N^2 (r_max / L)^3), and own images add
 // about 1/N to g. Throws cmp::UsageError for bin_width <= 0 or r_max <= bin_width.
+// The most bins of a g(r) (r_max / bin_width), and the most box lengths its range may reach
+// (the image sum is cubic in it): beyond, cmp::UsageError (shellpack checks its options first).
+inline constexpr double kMaxRdfBins = 1e6;
+inline constexpr double kMaxRdfImages = 20;
 RadialDistribution radial_distribution(const std::vector<SpherePacking>& packings, double bin_width = 0.01,
                                        double r_max = 3.0);
 

@@ -60,6 +60,14 @@ Packing read_shells(io::Input& input) {
     p.d0 = std::cbrt(6 * mean / M_PI);
     p.d0_source = "shell_volume";
   }
+  // A box of many millions of shell diameters is no packing, and what is built on it (cell
+  // lists, voxel grids, CGAL's periodic Voronoi cells, which ran for minutes at 1e100 and
+  // crashed at 1e308) has no use for it: said at the box line.
+  for (int a = 0; a < 3; ++a)
+    if (!(p.box[a] / p.d0 <= kMaxBoxInD0))
+      throw InputError(path, off.packing.box_line,
+                       fmt::format("box side {:g} is {:.3g} D0 (D0 = {:.4g}, from {}): more than {:g} D0, far beyond "
+                                   "any packing", p.box[a], p.box[a] / p.d0, p.d0, p.d0_source, kMaxBoxInD0));
   return p;
 }
 

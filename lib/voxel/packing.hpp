@@ -16,6 +16,9 @@ class Input;
 
 namespace cmp::voxel {
 
+// The largest box side of a packing OFF, in D0: larger is refused when read.
+inline constexpr double kMaxBoxInD0 = 1e6;
+
 struct Packing {
   enum class Kind { Shells, Spheres };
   Kind kind = Kind::Shells;

@@ -23,7 +23,9 @@ TEST_CASE("parse_dims takes NXxNYxNZ and nothing else", "[flowrun][image]") {
   CHECK(parse_dims("3x4x5") == std::array<int, 3>{3, 4, 5});
   for (const char* bad : {"96x96", "0x1x1", "1x1x1x1", "axbxc", "2x2x-1", "1.5x2x2", "", "x1x1"})
     CHECK_THROWS_AS(parse_dims(bad), UsageError);
-  CHECK_THROWS_WITH(parse_dims("99999x99999x99999"), Catch::Contains("2^40"));
+  CHECK_THROWS_WITH(parse_dims("99999x99999x99999"), Catch::Contains("2^31 - 1 voxels or more"));
+  CHECK_THROWS_WITH(parse_dims("2048x1024x1024"), Catch::Contains("2^31 - 1 voxels or more"));
+  CHECK(parse_dims("2047x1024x1024") == std::array<int, 3>{2047, 1024, 1024});
 }
 
 TEST_CASE("read_vtk_image takes every scalar type, non-zero as fluid, and percolate's field data",

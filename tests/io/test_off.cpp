@@ -1,7 +1,10 @@
 // lib/io/off.hpp: OFF meshes and packings, round trips and every malformed case.
 #include "io/off.hpp"
 
+#include "io/input.hpp"
 #include "io_test_support.hpp"
+
+#include <cmath>
 
 #include <sstream>
 
@@ -13,9 +16,12 @@ using Catch::Matchers::StartsWith;
 
 namespace {
 
-// Two tetrahedra, one per shell, with coordinates no short decimal form holds.
+// Two tetrahedra, one per shell, with coordinates no short decimal form holds (those the
+// reader takes: magnitudes up to kMaxCoordinate).
 mesh::TriMesh two_tetrahedra() {
-  const auto a = awkward_doubles();
+  std::vector<double> a;
+  for (double x : awkward_doubles())
+    if (std::abs(x) <= kMaxCoordinate) a.push_back(x);
   mesh::TriMesh m;
   m.V.resize(8, 3);
   for (int i = 0; i < 8; ++i)
@@ -58,6 +64,20 @@ TEST_CASE("OFF round trip keeps every double, comments and packing lines", "[off
   CHECK(off.packing.shell_vertex_counts == packing.shell_vertex_counts);
   CHECK(shell_vertex_offsets(off.packing) == std::vector<int>{0, 4, 8});
   CHECK(dir.entries() == std::vector<std::string>{"p.off"});
+}
+
+TEST_CASE("OFF coordinates and box sides beyond 1e100 are refused at their line", "[off]") {
+  // Volumes and distances made from larger numbers overflow (issue 37: a vertex at 1e308
+  // crashed shellpack analyze's g(r), a box of 1e308 CGAL's periodic Voronoi).
+  std::istringstream far("OFF\n3 1 0\n0 0 0\n1e308 0 0\n0 1 0\n3 0 1 2\n");
+  Input far_in("far.off", far);
+  CHECK_THROWS_WITH(read_off(far_in), Contains("far.off:4: coordinate '1e308' is beyond +-1e+100"));
+  std::istringstream box("OFF\n# box 1 1e101 1\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  Input box_in("box.off", box);
+  CHECK_THROWS_WITH(read_off(box_in), Contains("box.off:2: box side '1e101' is beyond 1e+100"));
+  std::istringstream edge("OFF\n# box 1 1e100 1\n3 1 0\n0 0 0\n-1e100 0 0\n0 1 0\n3 0 1 2\n");
+  Input edge_in("edge.off", edge);
+  CHECK(read_off(edge_in).V(1, 0) == -1e100);
 }
 
 TEST_CASE("OFF without packing reads back as a plain mesh", "[off]") {

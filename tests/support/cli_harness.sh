@@ -67,6 +67,15 @@ interrupt_run() {
   return $got
 }
 
+# cpu_limited SECONDS cmd...: runs cmd with at most SECONDS of CPU time (ulimit -t; it dies by
+# SIGXCPU beyond). A bound on work, not on the wall clock, so another process on the machine
+# cannot make it fail; a program blocked without computing is left to ctest's timeout.
+cpu_limited() {
+  local seconds=$1
+  shift
+  (ulimit -t "$seconds" && exec "$@")
+}
+
 run_cases() {
   local cases
   cases=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')

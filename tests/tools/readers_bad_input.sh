@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The readers of lib/io as the programs meet them (issue 15): inputs built to overflow counts,
 # exhaust memory or flood the terminal give exit 2 and one short `tool: file:line: what` line,
-# fast and in bounded memory; '-' holds an OFF or an extended XYZ, told from the content.
+# with bounded work (CPU time) and memory; '-' holds an OFF or an extended XYZ, told from the content.
 # `readers_bad_input.sh --list` prints the cases; `readers_bad_input.sh CASE` runs one (ctest
 # registers each). Needs CMP_BIN (the built programs) and CMP_SRC.
 set -uo pipefail
@@ -14,13 +14,14 @@ sc="$src/data/percolate/simple_cubic_4x4x4.xyz"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 enter_scratch_dir
 
-# bounded TOOL STATUS PATTERN cmd...: expect_error under a 20 s timeout, and the program's
+# bounded TOOL STATUS PATTERN cmd...: expect_error within 20 s of CPU time (not of wall time:
+# the machine's load cannot fail it), and the program's
 # peak memory (max RSS) below 200 MB.
 bounded() {
   cli_tool=$1
   local want=$2 pattern=$3
   shift 3
-  expect_error "$want" "$pattern" timeout 20 /usr/bin/time -f %M -o rss.txt "$@"
+  expect_error "$want" "$pattern" cpu_limited 20 /usr/bin/time -f %M -o rss.txt "$@"
   local rss
   rss=$(tail -1 rss.txt)
   [ "$rss" -lt 200000 ] || fail "$*: used $rss kB"

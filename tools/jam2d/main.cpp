@@ -57,6 +57,8 @@ void check_growth(cli::Tool& tool, Options& o) {
   o.growth.adaptive_step = !o.fixed_step;
   o.growth.reset_step = !o.double_step;
   tool.check(o.growth.box >= 2.61 || o.growth.box <= 0, "--box", "must be at least 2.61 sigma (twice the lobe cutoff and skin)");
+  // A colony fills its box: of the order of L^2 cells at jamming. --box 1e300 grew for ever.
+  tool.check(o.growth.box <= 1000, "--box", "must be at most 1000 sigma (a colony jams with of the order of L^2 cells)");
   tool.collect("--contact", [&] { contact_law(o.contact); });
 }
 
@@ -82,6 +84,7 @@ void run_grow(const Options& o, const std::string& provenance) {
   std::unique_ptr<io::CsvWriter> table;
   if (csv) {
     table = std::make_unique<io::CsvWriter>(csv->stream());
+    table->allow_infinity();  // P0 = inf: no feedback
     table->meta("provenance", provenance);
     table->meta("units", kUnits);
     table->meta("box", io::format_number(o.growth.box));
@@ -112,10 +115,8 @@ void run_grow(const Options& o, const std::string& provenance) {
     const PackingAnalysis a = analyse_packing(cells, engine);
     io::XyzWriter(packing->stream()).write(packing_frame(cells, o.growth.box, &a,
                                                          packing_info(colony, o.common.seed, o.dphi, provenance)));
-    packing->commit();
   }
-  if (trajectory) trajectory->commit();
-  if (csv) csv->commit();
+  io::commit_in_order({packing.get(), trajectory.get(), csv.get()});
   if (!o.common.quiet)
     std::cerr << fmt::format("jam2d: jammed at phi_J = {:.6f}; {} cells at phi = {:.6f}, t = {:.4f}/gamma0; {} steps "
                              "accepted, {} rejected, {} FIRE iterations\n",
@@ -165,6 +166,7 @@ void run_sweep(const Options& o, const std::vector<std::uint64_t>& seeds, const 
   });
   bar.finish();
   io::CsvWriter table(out.stream());
+  table.allow_infinity();  // P0 = inf: no feedback
   table.meta("provenance", provenance);
   table.meta("units", kUnits);
   table.meta("box", io::format_number(o.growth.box));
@@ -192,14 +194,15 @@ int main(int argc, char** argv) {
     tool.add_common(*grow, o.common, cli::Tool::kSeed | cli::Tool::kQuiet);
     tool.add_double(*grow, "--dphi", o.dphi, "grow beyond jamming to phi_J + dphi", cli::non_negative());
     grow->add_option("--P0", o.P0_text, "feedback pressure P0 [k] beyond jamming ('inf': none)");
-    grow->add_option("-o,--packing", o.packing_output, "write the final packing as extended XYZ ('-': stdout)");
-    grow->add_option("--csv", o.csv_output, "growth table, one row per accepted step ('-': stdout; '' for none)");
-    grow->add_option("--trajectory", o.trajectory_output, "write every --every-th accepted step as XYZ frames");
+    tool.add_output(*grow, "-o,--packing", o.packing_output, "write the final packing as extended XYZ ('-': stdout)");
+    tool.add_output(*grow, "--csv", o.csv_output, "growth table, one row per accepted step ('-': stdout; '' for none)");
+    tool.add_output(*grow, "--trajectory", o.trajectory_output, "write every --every-th accepted step as XYZ frames");
     tool.add_long(*grow, "--every", o.every, "accepted steps between --trajectory frames", cli::at_least(1));
 
     auto* moduli = app->add_subcommand("moduli", "P, B, G, Z, Z_iso, f_u and rattlers of static packings; CSV row per frame");
     moduli->add_option("packings", o.inputs, "extended XYZ packings as jam2d writes them ('-': stdin)")->required();
-    moduli->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.declare_inputs(*moduli, o.inputs);
+    tool.add_output(*moduli, "-o,--output", o.output, "CSV ('-': stdout)");
     moduli->add_option("--contact", o.contact, "contact law the packing was made with");
     tool.add_common(*moduli, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
@@ -208,7 +211,7 @@ int main(int argc, char** argv) {
     tool.add_seed_options(*sweep, o.seeding, "colony");
     sweep->add_option("--dphi", o.dphi_text, "dphi values: FIRST:LAST:STEP or a comma list (0: at jamming)");
     sweep->add_option("--P0", o.P0_text, "comma list of feedback pressures [k], 'inf' for none");
-    sweep->add_option("-o,--output", o.output, "CSV ('-': stdout)");
+    tool.add_output(*sweep, "-o,--output", o.output, "CSV ('-': stdout)");
     tool.add_common(*sweep, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     tool.parse(argc, argv);

@@ -85,14 +85,14 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
   }
   io::AtomicOutput out(o.output);
   io::CsvWriter csv(out.stream());
+  csv.allow_infinity();  // undefined standard errors are inf, as curve_fit reports them
   fit::write_report_csv(csv, report);
   std::unique_ptr<io::AtomicOutput> plot;
   if (!o.plot.empty()) {
     plot = std::make_unique<io::AtomicOutput>(o.plot);
     plot->stream().write(figure.data(), static_cast<std::streamsize>(figure.size()));
   }
-  out.commit();
-  if (plot) plot->commit();
+  io::commit_in_order({&out, plot.get()});
   if (!o.common.quiet) std::cerr << fit::report_summary("kcfit", report);
   return 0;
 }
@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
                             "(thesis 5.5.6, Table S5.1) to CSV tables.");
     auto* app = &tool.app();
     app->add_option("inputs", o.inputs, "CSV tables with a header row, the same columns in each ('-': stdin)");
+    tool.declare_inputs(*app, o.inputs);
     app->add_flag("--list-models", o.list, "print the models, their formulas, parameters and default columns, then exit");
     app->add_option("-m,--model", o.model, "model to fit (--list-models)");
     app->add_option("--x", o.x, "column of the abscissa (default: the model's, e.g. porosity)");
@@ -129,7 +130,7 @@ int main(int argc, char** argv) {
     app->add_option("--free", o.free, "fit a parameter that is fixed by default (the tortuosity exponent e)")
         ->allow_extra_args(false);
     tool.add_int(*app, "--max-iter", o.max_iterations, "solver iterations per starting point", cli::closed(1, 1000000));
-    app->add_option("--plot", o.plot, "also draw data and fit with gnuplot into this .png, .svg or .pdf file");
+    tool.add_output(*app, "--plot", o.plot, "also draw data and fit with gnuplot into this .png, .svg or .pdf file");
     app->add_option("--xlabel", o.xlabel,
                     "x axis label of the plot, gnuplot enhanced text (default from the column: porosity -> "
                     "'porosity {/Symbol f}', delta -> 'voxel side {/Symbol d} / D_0', ...)");
@@ -138,7 +139,7 @@ int main(int argc, char** argv) {
     tool.add_int(*app, "--bootstrap", o.bootstrap, "also estimate errors from N bootstrap resamples",
                  cli::closed(0, 10000000));
     tool.add_common(*app, o.common, cli::Tool::kSeed | cli::Tool::kThreads);
-    app->add_option("-o,--output", o.output, "output CSV: one row per parameter (value, error, covariance), or with --group-by one row per group "
+    tool.add_output(*app, "-o,--output", o.output, "output CSV: one row per parameter (value, error, covariance), or with --group-by one row per group "
                   "(group columns, then <p>,<p>_error ...); '-': stdout");
     tool.add_common(*app, o.common, cli::Tool::kQuiet);
     tool.parse(argc, argv);

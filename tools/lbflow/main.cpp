@@ -52,8 +52,10 @@ void declare(cli::Tool& tool, Options& o) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_option("inputs", o.inputs,
                  "pore images: binary VTK STRUCTURED_POINTS (percolate -o; non-zero = fluid), raw bytes with --dims, "
-                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads a VTK image or raw bytes from stdin")
+                 "or a sphere packing as extended XYZ (exact walls, with --delta); '-' reads any of them from stdin, told from "
+                 "the content (raw bytes: with --dims)")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  tool.declare_inputs(app, o.inputs);
   app.add_option("--dims", o.dims, "the inputs are raw bytes (x fastest, non-zero = fluid) of NXxNYxNZ voxels");
   tool.add_int(app, "-M,--refine", o.refine, "lattice refinement M: each voxel becomes M^3 nodes (thesis: 3)",
                cli::at_least(1));
@@ -83,11 +85,11 @@ void declare(cli::Tool& tool, Options& o) {
   tool.add_long(app, "--max-steps", o.max_steps, "step cap: exit 1 if not converged by then", cli::at_least(1));
   tool.add_long(app, "--check-every", o.check_every, "steps between convergence checks", cli::at_least(1));
   tool.add_long(app, "--window", o.window, "checks between the two values compared", cli::at_least(1));
-  app.add_option("-o,--output", o.csv, "CSV, one row per input ('-': stdout)")->capture_default_str();
-  app.add_option("--vtk", o.vtk, "velocity and density as VTK in the input's geometry (ParaView overlays it on the "
+  tool.add_output(app, "-o,--output", o.csv, "CSV, one row per input ('-': stdout)")->capture_default_str();
+  tool.add_output(app, "--vtk", o.vtk, "velocity and density as VTK in the input's geometry (ParaView overlays it on the "
                                  "packing); several inputs: use {name}");
-  app.add_option("--history", o.history, "CSV of kappa and tau_H at every convergence check ('-': stdout)");
-  app.add_option("--checkpoint", o.checkpoint, "save the run here every --checkpoint-every seconds and at the end "
+  tool.add_output(app, "--history", o.history, "CSV of kappa and tau_H at every convergence check ('-': stdout)");
+  tool.add_output(app, "--checkpoint", o.checkpoint, "save the run here every --checkpoint-every seconds and at the end "
                                                "(atomic); one input only");
   tool.add_double(app, "--checkpoint-every", o.checkpoint_every, "seconds between checkpoints (0: every check)",
                   cli::non_negative());

@@ -178,6 +178,7 @@ int main(int argc, char** argv) {
     app->add_option("packings", o.inputs, "packings: OFF of shells ('# box' needed) or extended XYZ of spheres (a "
                                           "radius column; every frame is a packing), told from the content; '-' "
                                           "reads either from stdin");
+    tool.declare_inputs(*app, o.inputs);
     app->add_option("-d,--delta", o.deltas, "lattice constant(s) delta [D0], comma separated, e.g. 0.03,0.04,0.05");
     tool.add_double(*app, "--d0", o.d0, "D0, the unit of delta [length units of the file]; 0 (default): a 'D0=' "
                                          "comment of the file, else the volume-equivalent diameter of the mean shell "
@@ -197,12 +198,12 @@ int main(int argc, char** argv) {
     app->add_flag("--periodic", o.periodic, "label with periodic faces perpendicular to the axis tested (as LB's "
                                             "boundaries); default: not periodic, as scipy.ndimage.label in the thesis");
     app->add_option("--axis", o.axis, "flow axis: the cluster written and measured (R_h) spans it")->capture_default_str();
-    app->add_option("-o,--output", o.vtk, "percolating cluster as binary VTK STRUCTURED_POINTS (1 = cluster; origin "
+    tool.add_output(*app, "-o,--output", o.vtk, "percolating cluster as binary VTK STRUCTURED_POINTS (1 = cluster; origin "
                                           "and spacing in the packing's length units, so it overlays the packing; "
                                           "scale, delta and D0 in the title and as field data delta, d0, scale); "
                                           "with several packings, frames, scales or deltas use {name}, {frame}, "
                                           "{scale} and {delta}");
-    app->add_option("--csv", o.csv, "CSV output, one row per packing, scale and delta ('-': stdout); column "
+    tool.add_output(*app, "--csv", o.csv, "CSV output, one row per packing, scale and delta ('-': stdout); column "
                                     "porosity is the geometric porosity (porosity_method says how)")
         ->capture_default_str();
     app->add_flag("--timings", o.timings, "print the wall-clock time of marking and labelling per run on stderr "
@@ -214,10 +215,11 @@ int main(int argc, char** argv) {
     sweep->add_option("tables", o.tables, "CSV files written by percolate ('-': stdin); rows are grouped by "
                                           "particles and delta and binned over porosity, all scales together")
         ->required();
+    tool.declare_inputs(*sweep, o.tables);
     tool.add_int(*sweep, "--bins", o.bins, "porosity bins per (N, delta) over the range of the data", cli::at_least(1));
     sweep->add_option("--porosity", o.porosity_column, "column to bin: porosity (geometric) or porosity_voxels")
         ->capture_default_str();
-    sweep->add_option("-o,--output", o.csv, "output CSV ('-': stdout)")->capture_default_str();
+    tool.add_output(*sweep, "-o,--output", o.csv, "output CSV ('-': stdout)")->capture_default_str();
 
     tool.parse(argc, argv);
     voxel::PercolatePlan plan;

@@ -143,6 +143,9 @@ void run_stats(const Options& o, const std::string& provenance) {
 
 }  // namespace
 
+// The most vertices a subdivided sphere may have (2^24: about 1.2 GB of mesh).
+constexpr long kMaxMeshVertices = 1L << 24;
+
 int main(int argc, char** argv) {
   return cli::run_tool("rndmesh", [&] {
     Options o;
@@ -160,7 +163,7 @@ int main(int argc, char** argv) {
       auto* sub = app->add_subcommand(name, std::string("iterative sphere mesh: ") + what);
       tool.add_int(*sub, "-l,--level", o.level, "subdivision level; 1 is the base polyhedron", cli::closed(1, 14));
       tool.add_double(*sub, "-r,--radius", o.radius, "sphere radius [length units]", cli::positive());
-      sub->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
+      tool.add_output(*sub, "-o,--output", o.output, "output OFF file ('-': stdout)");
       tool.add_common(*sub, o.common, cli::Tool::kQuiet);
       schemes.emplace_back(sub, scheme);
     }
@@ -180,16 +183,25 @@ int main(int argc, char** argv) {
     tool.add_double(*random, "--step", a.step_sigmas, "largest trial displacement per axis [sigma]", cli::positive());
     tool.add_seed_options(*random, o.seeding, "mesh");
     tool.add_common(*random, o.common, cli::Tool::kThreads);
-    random->add_option("--trace", o.trace, "also write temperature, acceptance and energy per anneal to this CSV");
-    random->add_option("-o,--output", o.output, "output OFF file ('-': stdout)");
+    tool.add_output(*random, "--trace", o.trace, "also write temperature, acceptance and energy per anneal to this CSV");
+    tool.add_output(*random, "-o,--output", o.output, "output OFF file ('-': stdout)");
     tool.add_common(*random, o.common, cli::Tool::kQuiet);
 
     auto* stats = app->add_subcommand("stats", "quality metrics (A.3) of closed triangle meshes, one CSV row per file");
     stats->add_option("meshes", o.inputs, "OFF files ('-': stdin)")->required();
-    stats->add_option("-o,--output", o.output, "output CSV file ('-': stdout)");
+    tool.declare_inputs(*stats, o.inputs);
+    tool.add_output(*stats, "-o,--output", o.output, "output CSV file ('-': stdout)");
     tool.add_common(*stats, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     tool.parse(argc, argv);
+    // A level is checked by the mesh it makes, before any of it is built: icosa at level 14
+    // would be 671 million vertices (tens of GB), simple at level 14 is 49,154.
+    for (const auto& [sub, scheme] : schemes)
+      if (sub->parsed())
+        tool.check(spheremesh::subdivision_vertex_count(scheme, o.level) <= kMaxMeshVertices, "--level",
+                   fmt::format("level {} of {} makes {} vertices, more than {} (2^24)", o.level,
+                               spheremesh::subdivision_name(scheme), spheremesh::subdivision_vertex_count(scheme, o.level),
+                               kMaxMeshVertices));
     std::vector<std::uint64_t> seeds;
     if (random->parsed()) {
       tool.check(a.t_max >= a.t_min, "--tmax", fmt::format("must be at least --tmin ({} < {})", a.t_max, a.t_min));

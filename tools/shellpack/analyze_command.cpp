@@ -1,5 +1,9 @@
 #include "analyze_command.hpp"
 
+#include "spheres/structure.hpp"
+
+#include <fmt/format.h>
+
 namespace cmp::shellpack {
 
 CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) {
@@ -7,10 +11,11 @@ CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpti
   auto* analyze = parent.add_subcommand("analyze", "the Chapter 4 observables of packings of shells (packing OFFs): Z, g(r), "
                                                    "shapes, turgor, contact forces, mu_eff, walls, Voronoi facets");
   analyze->add_option("packings", an.inputs, "packing OFFs ('-': stdin); one summary row each")->required();
-  analyze->add_option("-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
-  analyze->add_option("--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
-  analyze->add_option("--shells", an.shells_output, "write one row per shell to this CSV");
-  analyze->add_option("--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
+  tool.declare_inputs(*analyze, an.inputs);
+  tool.add_output(*analyze, "-o,--output", an.output, "summary CSV, one row per packing ('-': stdout)");
+  tool.add_output(*analyze, "--rdf", an.rdf_output, "write g(r) of the shell centres per packing to this CSV");
+  tool.add_output(*analyze, "--shells", an.shells_output, "write one row per shell to this CSV");
+  tool.add_output(*analyze, "--contacts", an.contacts_output, "write one row per contact and direction to this CSV");
   E_opt_ = tool.add_double(*analyze, "-E,--youngs-modulus", E_, "Young's modulus E [P] (default: the file's E=)",
                            cli::positive())->default_str("");
   nu_opt_ = tool.add_double(*analyze, "--nu,--poisson-ratio", nu_, "Poisson's ratio nu (default: the file's nu=, else 0.5)",
@@ -42,6 +47,10 @@ CLI::App* AnalyzeCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpti
 void AnalyzeCommand::check(cli::Tool& tool) {
   const auto& b = batch_;
   tool.check(b.options.r_max > b.options.bin_width, "--rmax", "must exceed --bin");
+  tool.check(b.options.r_max / b.options.bin_width <= spheres::kMaxRdfBins,
+             b.options.bin_width < packrun::AnalyzeBatch{}.options.bin_width ? "--bin" : "--rmax",
+             fmt::format("--rmax / --bin makes {:.3g} bins of g(r), more than {:g}", b.options.r_max / b.options.bin_width,
+                         spheres::kMaxRdfBins));
   const int to_stdout =
       (b.output == "-") + (b.rdf_output == "-") + (b.shells_output == "-") + (b.contacts_output == "-");
   tool.check(to_stdout <= 1, "", "-o, --rdf, --shells and --contacts: at most one of them may be '-' (stdout)");

@@ -14,7 +14,7 @@ CLI::App* BenchMechanicsCommand::add(cli::Tool& tool, CLI::App& parent, cli::Com
       ->required();
   bench->add_flag("--analytic", analytic_, "write the analytic reference curve of the case instead (lib/elasticity)");
   bench->add_flag("--full", full_, "the thesis's mesh sizes and every load (slower; the figures)");
-  bench->add_option("-o,--output", output_, "CSV ('-': stdout)");
+  tool.add_output(*bench, "-o,--output", output_, "CSV ('-': stdout)");
   tool.add_common(*bench, common, cli::Tool::kThreads | cli::Tool::kQuiet);
   return bench;
 }

@@ -12,8 +12,8 @@ CLI::App* JamCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions&
       ->required();
   tool.add_seed_options(*jam, seeding_, "packing");
   tool.add_common(*jam, common, cli::Tool::kThreads);
-  jam->add_option("-o,--packing", batch_.packing_output, "write the packing to this extended XYZ file (OVITO, ASE; '-': stdout); with --seeds, {seed} makes one file per seed, else every packing is one frame of this file, in seed order");
-  jam->add_option("--csv", batch_.csv_output,
+  tool.add_output(*jam, "-o,--packing", batch_.packing_output, "write the packing to this extended XYZ file (OVITO, ASE; '-': stdout); with --seeds, {seed} makes one file per seed, else every packing is one frame of this file, in seed order");
+  tool.add_output(*jam, "--csv", batch_.csv_output,
                   "CSV of packing figures ('-': stdout; {seed}: one per seed) [default: stdout, none with -o -]");
   jam->add_flag("--timings", batch_.timings, "add the wall time of each packing (`seconds`) to the CSV");
   tool.add_double(*jam, "--phi0", p.initial_volume_fraction, "volume fraction of the random start, psi_0", cli::open(0, 0.5));
@@ -56,6 +56,9 @@ void JamCommand::check(cli::Tool& tool) {
              fmt::format("N = {} is too small: a periodic rattler-free jammed packing needs N >= {} "
                          "(with fewer spheres each would touch two images of another)",
                          batch_.spheres, spheres::kMinJammingSpheres));
+  tool.check(batch_.spheres <= spheres::kMaxJammingSpheres, "--spheres",
+             fmt::format("N = {} is more than the {} spheres a packing is made of here", batch_.spheres,
+                         spheres::kMaxJammingSpheres));
   tool.check(p.fire.dt_max >= p.fire.dt, "--fire-dt-max", "must be at least --fire-dt");
   batch_.seeds = tool.seed_list(seeding_);
   batch_.resume = seeding_.resume;

@@ -13,6 +13,7 @@ CLI::App* ShellCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOption
   auto* sh = parent.add_subcommand("shell", "one pressurised elastic shell on a triangle mesh, inflated and optionally "
                                             "squeezed between two plates (App. B); CSV row per load step");
   sh->add_option("--mesh", job_.mesh_path, "closed, outward-oriented triangle mesh (OFF; '-': stdin)");
+  tool.declare_input(*sh, job_.mesh_path);
   sh->add_flag("--list-models", list_models_, "list the registered stretching, bending, pressure and contact models (CSV) and exit");
   sh->add_option("--model", model.stretching, "stretching model (--list-models)")->default_str("svk");
   sh->add_option("--bending", model.bending, "bending model, or none (a membrane)")->default_str("none");
@@ -39,8 +40,8 @@ CLI::App* ShellCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOption
   tool.add_long(*sh, "--fire-max-iterations", run.relax.fire.max_iterations, "FIRE iteration cap per relaxation",
                 cli::at_least(1));
   volume_rule_.add(*sh);
-  sh->add_option("-o,--output", job_.mesh_output, "write the relaxed mesh to this OFF ('-': stdout)");
-  sh->add_option("--csv", job_.csv, "the table of load steps ('-': stdout)")->default_str("-");
+  tool.add_output(*sh, "-o,--output", job_.mesh_output, "write the relaxed mesh to this OFF ('-': stdout)");
+  tool.add_output(*sh, "--csv", job_.csv, "the table of load steps ('-': stdout)")->default_str("-");
   tool.add_common(*sh, common, cli::Tool::kThreads | cli::Tool::kQuiet);
   return sh;
 }
