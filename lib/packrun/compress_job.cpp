@@ -26,7 +26,8 @@ namespace cmp::packrun {
 
 namespace {
 
-constexpr const char* kMagic = "shellpack compress checkpoint 1";
+// 2: a checksum of the state follows it (io::CheckpointOutput); 1 had none.
+constexpr const char* kMagic = "shellpack compress checkpoint 2";
 constexpr const char* kWhat = "a shellpack compress checkpoint";
 
 // v rounded to 12 significant digits (the targets as a user reads them back), through the
@@ -94,7 +95,7 @@ std::vector<double> parse_phi_targets(const std::string& text) {
 
 std::vector<std::string> compress_checkpoint_args(const std::string& path) {
   auto in = io::open_checkpoint(path);
-  return io::read_checkpoint_header(in, path, kMagic, kWhat);
+  return io::read_checkpoint_header(in, path, kMagic, kWhat, true);
 }
 
 namespace {
@@ -201,9 +202,8 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   std::size_t saved_rows = 0;
   const auto save = [&] {
     if (job.checkpoint.empty() || !saved) return;
-    io::AtomicOutput out(job.checkpoint);
+    io::CheckpointOutput out(job.checkpoint, kMagic, job.checkpoint_args);
     auto& s = out.stream();
-    io::write_checkpoint_header(s, kMagic, job.checkpoint_args);
     io::put(s, fp.h);
     io::put(s, provenance);
     io::put(s, saved->step);
@@ -224,7 +224,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
 
   if (!job.resume.empty()) {
     auto in = io::open_checkpoint(job.resume);
-    io::read_checkpoint_header(in, job.resume, kMagic, kWhat);
+    io::read_checkpoint_header(in, job.resume, kMagic, kWhat, true);
     io::CheckpointReader r(in, job.resume);
     if (r.get<std::uint64_t>() != fp.h)
       throw InputError(job.resume, 0,

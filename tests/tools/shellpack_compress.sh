@@ -233,4 +233,29 @@ case_default_contact_is_faces() {
   grep -q "^# contact=hertz-faces$" d.off || fail "packing: $(grep contact d.off)"
 }
 
+# A checkpoint carries a checksum of its state: one flipped bit or a cut is refused, exit 2.
+case_damaged_checkpoint_refused() {
+  make_start
+  compress --phi 0.45 --checkpoint run.chk --stop-after-steps 1 >/dev/null || fail "first part"
+  /usr/bin/python3 - <<'PY'
+data = bytearray(open("run.chk", "rb").read())
+data[len(data) // 2] ^= 0x04
+open("flip.chk", "wb").write(data)
+open("cut.chk", "wb").write(open("run.chk", "rb").read()[:-100])
+PY
+  expect_error 2 "flip.chk: checkpoint damaged" "$shellpack" compress --resume flip.chk -q
+  expect_error 2 "cut.chk: checkpoint damaged" "$shellpack" compress --resume cut.chk -q
+  "$shellpack" compress --resume run.chk -q >/dev/null || fail "the intact checkpoint resumes"
+}
+
+# Outputs are checked before any work: two outputs on one file, an output on an input.
+case_outputs_checked_first() {
+  make_start
+  expect_error 2 "--csv: p.off is also the output of --output" compress --phi 0.45 -o p.off --csv p.off
+  expect_error 2 "--output: jammed.xyz is also an input" compress --phi 0.45 -o jammed.xyz
+  expect_error 2 "--checkpoint: " compress --phi 0.45 --checkpoint nodir/run.chk
+  ls p.off ./*_*.off 2>/dev/null && fail "work started: $(ls)"
+  return 0
+}
+
 run_cases "$@"

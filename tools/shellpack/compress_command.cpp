@@ -112,11 +112,13 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
   cp->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   cp->add_option("packing", job.packing_path, "jammed sphere packing, extended XYZ (shellpack jam; first frame; periodic)");
   cp->add_option("--mesh", job.mesh_path, "the cell: closed, outward-oriented triangle mesh (OFF), one copy per sphere");
+  tool.declare_input(*cp, job.packing_path);
+  tool.declare_input(*cp, job.mesh_path);
   cp->add_option("--phi", phi, "target volume fractions, START:STOP:STEP or a list a,b,c (each in (0, 1])");
   cp->add_option("--dphi", dphi,
                  "targets as dphi = phi - phi_J above the inflated start instead (same forms; phi_J + dphi rounded to 6 decimals)");
-  cp->add_option("-o,--output", job.output_pattern, "write the packing OFF at each target here ({phi} = the target)");
-  cp->add_option("--csv", job.csv, "the table of box steps ('-': stdout)")->default_str("-");
+  tool.add_output(*cp, "-o,--output", job.output_pattern, "write the packing OFF at each target here ({phi} = the target)");
+  tool.add_output(*cp, "--csv", job.csv, "the table of box steps ('-': stdout)")->default_str("-");
   tool.add_double(*cp, "--step", job.run.step, "largest change of the box side per step [D0]", cli::positive());
   tool.add_double(*cp, "--P0", p0, "turgor Pi_0 of the inflated start [E]", cli::positive());
   tool.add_double(*cp, "-E,--youngs-modulus", cm.material.youngs_modulus, "Young's modulus E (the pressure unit)",
@@ -150,7 +152,7 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
   volume_rule.add(*cp);
   tool.add_int(*cp, "--max-volume-updates", job.run.relax.max_volume_updates,
                "Pi updates of the constant-volume loop per step before giving up (exit 1)", cli::at_least(1));
-  cp->add_option("--checkpoint", job.checkpoint, "save the run here every --checkpoint-every seconds and at the end");
+  tool.add_output(*cp, "--checkpoint", job.checkpoint, "save the run here every --checkpoint-every seconds and at the end");
   tool.add_double(*cp, "--checkpoint-every", job.checkpoint_every, "seconds between checkpoints", cli::non_negative());
   cp->add_option("--resume", job.resume, "continue the run saved in this checkpoint (alone: with its arguments)");
   tool.add_long(*cp, "--stop-after-steps", job.stop_after_steps,
