@@ -277,10 +277,14 @@ class Report:
             f = tau[m]
             if f and f.ok:
                 pc, c = f.value("phi_c")[0], f.value("C")[0]
-                xs = np.linspace(pc + 1e-3, max(p[0] for p in pts), 200)
+                xs = np.linspace(max(pc + 1e-3, min(p[0] for p in pts) - 0.03), max(p[0] for p in pts), 200)
                 ax.plot(xs, c * (xs - pc) ** -0.38, color=line.get_color(), lw=1)
-        xs = np.linspace(0.21, 0.5, 100)
-        ax.plot(xs, tv.ahmadi(xs), "k--", lw=1, label="Ahmadi et al., B = 1.16")
+        taus = [num(r, "tortuosity") for r in rows if int(r["particles"]) == n]
+        top = max(3.0, 1.3 * max(taus))
+        xs = np.linspace(0.205, 0.5, 200)
+        ya = tv.ahmadi(xs)
+        ax.plot(xs[ya < top], ya[ya < top], "k--", lw=1, label="Ahmadi et al., B = 1.16")
+        ax.set_ylim(1, top)
         ax.set_xlabel("porosity φ")
         ax.set_ylabel("hydraulic tortuosity τ_H")
         ax.legend()
