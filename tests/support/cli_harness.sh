@@ -76,6 +76,19 @@ cpu_limited() {
   (ulimit -t "$seconds" && exec "$@")
 }
 
+# expect_bounded SECONDS KB TOOL STATUS PATTERN cmd...: expect_error within SECONDS of CPU time
+# (not of wall time: the machine's load cannot fail it) and below KB of peak memory (max RSS).
+expect_bounded() {
+  local seconds=$1 kb=$2
+  cli_tool=$3
+  local want=$4 pattern=$5
+  shift 5
+  expect_error "$want" "$pattern" cpu_limited "$seconds" /usr/bin/time -f %M -o rss.txt "$@"
+  local rss
+  rss=$(tail -1 rss.txt)
+  [ "$rss" -lt "$kb" ] || fail "$*: used $rss kB"
+}
+
 run_cases() {
   local cases
   cases=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')

@@ -14,17 +14,10 @@ sc="$src/data/percolate/simple_cubic_4x4x4.xyz"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 enter_scratch_dir
 
-# bounded TOOL STATUS PATTERN cmd...: expect_error within 20 s of CPU time (not of wall time:
-# the machine's load cannot fail it), and the program's
-# peak memory (max RSS) below 200 MB.
+# bounded TOOL STATUS PATTERN cmd...: within 20 s of CPU time and 200 MB, with a short message
+# that holds no control byte.
 bounded() {
-  cli_tool=$1
-  local want=$2 pattern=$3
-  shift 3
-  expect_error "$want" "$pattern" cpu_limited 20 /usr/bin/time -f %M -o rss.txt "$@"
-  local rss
-  rss=$(tail -1 rss.txt)
-  [ "$rss" -lt 200000 ] || fail "$*: used $rss kB"
+  expect_bounded 20 200000 "$@"
   # the message is short and holds no control byte
   [ "$(wc -c <stderr.txt)" -lt 400 ] || fail "$*: message of $(wc -c <stderr.txt) bytes"
   ! LC_ALL=C grep -q '[[:cntrl:]]' <(tr -d '\n' <stderr.txt) || fail "$*: control bytes in the message"

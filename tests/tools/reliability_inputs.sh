@@ -15,17 +15,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 export OMP_NUM_THREADS=1
 enter_scratch_dir
 
-# bounded TOOL STATUS PATTERN cmd...: expect_error within 60 s of CPU time (a runaway
-# computation fails, whatever the machine's load) and below 300 MB of memory.
-bounded() {
-  cli_tool=$1
-  local want=$2 pattern=$3
-  shift 3
-  expect_error "$want" "$pattern" cpu_limited 60 /usr/bin/time -f %M -o rss.txt "$@"
-  local rss
-  rss=$(tail -1 rss.txt)
-  [ "$rss" -lt 300000 ] || fail "$*: used $rss kB"
-}
+# bounded TOOL STATUS PATTERN cmd...: within 60 s of CPU time and 300 MB.
+bounded() { expect_bounded 60 300000 "$@"; }
 cluster_vtk() {
   printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0.5 0.5 0.5 0.4\n' >sphere.xyz
   "$percolate" sphere.xyz --delta 0.125 -o c.vtk -q >p.csv || fail "percolate"
