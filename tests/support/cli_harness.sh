@@ -89,6 +89,13 @@ expect_bounded() {
   [ "$rss" -lt "$kb" ] || fail "$*: used $rss kB"
 }
 
+# cluster_vtk: percolate's cluster image of one sphere in a periodic unit box at delta 0.125,
+# c.vtk (needs $percolate).
+cluster_vtk() {
+  printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0.5 0.5 0.5 0.4\n' >sphere.xyz
+  "$percolate" sphere.xyz --delta 0.125 -o c.vtk -q >p.csv || fail "percolate"
+}
+
 run_cases() {
   local cases
   cases=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')

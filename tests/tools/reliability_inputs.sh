@@ -18,11 +18,6 @@ enter_scratch_dir
 # bounded TOOL STATUS PATTERN cmd...: within 60 s of CPU time and 300 MB.
 bounded() { expect_bounded 60 300000 "$@"; }
 
-# percolate's cluster image of one sphere in a periodic unit box at delta 0.125: c.vtk.
-cluster_vtk() {
-  printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0.5 0.5 0.5 0.4\n' >sphere.xyz
-  "$percolate" sphere.xyz --delta 0.125 -o c.vtk -q >p.csv || fail "percolate"
-}
 # The octahedron packing of tests/data/io with its box line or a vertex replaced.
 packing_with() {
   sed "$1" "$src/tests/data/io/octahedron_packing.off" >"$2"

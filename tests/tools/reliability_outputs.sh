@@ -18,11 +18,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 export OMP_NUM_THREADS=1
 enter_scratch_dir
 
-# percolate's cluster image of one sphere in a periodic unit box at delta 0.125: c.vtk.
-cluster_vtk() {
-  printf '1\nLattice="1 0 0 0 1 0 0 0 1" Properties=species:S:1:pos:R:3:radius:R:1 pbc="T T T" D0=1\nX 0.5 0.5 0.5 0.4\n' >sphere.xyz
-  "$percolate" sphere.xyz --delta 0.125 -o c.vtk -q >p.csv || fail "percolate"
-}
 # refused_at_once TOOL PATTERN cmd...: exit 2 with one line naming the option (no summary
 # line of a finished computation before it), and no output left behind.
 refused_at_once() {
