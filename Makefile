@@ -28,6 +28,9 @@ $(BUILD)/CMakeCache.txt:
 
 # Builds everything and runs every test (Catch2 unit tests, programs as a user runs them,
 # interoperability with ASE, meshio and scipy); the last line is "N passed, N failed".
+# EXAMPLES=small|full: the size at which the documentation's examples run (docs/conventions.md).
+EXAMPLES ?= small
+export EXAMPLES
 test: deps all
 	@scripts/run_tests.sh $(BUILD)
 
@@ -114,7 +117,7 @@ STUDY_TOOLS := rndmesh shellpack percolate lbflow kcfit
 STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
 .PHONY: study study-report study-jobs study-tools test-slurm
 study-tools: deps configure
-	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS) >&2
 study: study-tools
 	@$(STUDY_MAKE) all
 # The report from whatever has finished (tables, fits, figures; the rest says what is missing).
@@ -122,6 +125,7 @@ study-report: study-tools
 	@$(STUDY_MAKE) report
 # One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel
 # or a Slurm job array; run the stages in that order, each after the one before has finished.
+# (Standard output holds the commands only: the build above reports on standard error.)
 study-jobs: study-tools
 	@$(STUDY_MAKE) jobs
 # The tiny campaign on a single-node Slurm started here (scripts/study/slurm_local.sh), every

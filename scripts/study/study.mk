@@ -72,7 +72,7 @@ all:
 	@scripts/study/check_tools.sh '$(RUN)'
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory structure
 	@$(MAKE) -f scripts/study/study.mk --no-print-directory flow
-	@$(MAKE) -f scripts/study/study.mk --no-print-directory report
+	@$(MAKE) -f scripts/study/study.mk --no-print-directory $(D)/report.html
 
 # The campaign runs the programs and recipe scripts it copied into $(BIN) at its start, so that
 # one campaign is one version of the tools even when the checkout is rebuilt or edited while it
@@ -131,7 +131,7 @@ run_of   = $(word 1,$(subst /, ,$(1)))
 delta_of = $(patsubst d%,%,$(word 2,$(subst /, ,$(1))))
 
 # The second pass: one lbflow row per percolating cluster at FLOW_DELTA, for FLOW_N and FLOW_SEEDS.
-ifneq ($(filter flow stage-flow,$(MAKECMDGOALS)),)
+ifneq ($(filter flow stage-flow $(D)/report.html,$(MAKECMDGOALS)),)
 FLOW_ROWS := $(foreach r,$(flow_runs),$(foreach m,$(REFINE_LIST),$(foreach p,$(shell scripts/study/percolating.sh \
   $(D)/perc/$(r)/d$(FLOW_DELTA) $(PHI_LIST)),$(D)/flow/$(r)/M$(m)/$(p).csv)))
 endif
@@ -145,12 +145,20 @@ $(D)/flow/%.csv: $$(D)/perc/$$(call run_of,$$*)/d$(FLOW_DELTA)/$$(notdir $$*).vt
 $(D)/perc/%.vtk: $(D)/perc/%.csv ; @test -f $@
 
 # The third pass: tables (one per stage, rows of every finished target), fits and the report.
+# `make study` remakes report.html when a result, a parameter or a report script is newer, so a
+# finished campaign run again does nothing; `make study-report` (report) always writes it anew.
+REPORT_PARAMS := 'N=$(N)' 'SEEDS=$(SEEDS)' 'VERTICES=$(VERTICES)' 'PHI=$(PHI)' 'DELTA=$(DELTA)' \
+  'FLOW_DELTA=$(FLOW_DELTA)' 'REFINE=$(REFINE)' 'FLOW_N=$(FLOW_N)' 'FLOW_SEEDS=$(FLOW_SEEDS)' \
+  'COMPRESS_OPTS=$(COMPRESS_OPTS)' 'PERCOLATE_OPTS=$(PERCOLATE_OPTS)' 'LBFLOW_OPTS=$(LBFLOW_OPTS)'
+$(call stamp,report,$(REPORT_PARAMS))
+define write_report
+@scripts/study/check_tools.sh
+$(PYTHON) scripts/study/study_report.py --dir $(D) --study $(STUDY) --bin $(BIN) --params $(REPORT_PARAMS)
+endef
 report: | $(BIN)/kcfit
-	@scripts/study/check_tools.sh
-	$(PYTHON) scripts/study/study_report.py --dir $(D) --study $(STUDY) --bin $(BIN) \
-	  --params 'N=$(N)' 'SEEDS=$(SEEDS)' 'VERTICES=$(VERTICES)' 'PHI=$(PHI)' 'DELTA=$(DELTA)' \
-	  'FLOW_DELTA=$(FLOW_DELTA)' 'REFINE=$(REFINE)' 'FLOW_N=$(FLOW_N)' 'FLOW_SEEDS=$(FLOW_SEEDS)' \
-	  'COMPRESS_OPTS=$(COMPRESS_OPTS)' 'PERCOLATE_OPTS=$(PERCOLATE_OPTS)' 'LBFLOW_OPTS=$(LBFLOW_OPTS)'
+	$(write_report)
+$(D)/report.html: $(ANALYSES) $(PERC_ROWS) $(FLOW_ROWS) $(D)/params/report.txt $(wildcard scripts/study/*.py) | $(BIN)/kcfit
+	$(write_report)
 
 # One stage's commands, one a line, for GNU parallel or a job array (make study-jobs STAGE=...):
 # the recipes of the stage's unfinished targets, printed instead of run. A stage's jobs need the
