@@ -12,7 +12,7 @@ A command must exit 0 unless its comment announces another status ("exit 1", "ex
 
 EXAMPLES=small (make test's default) runs long examples at a reduced size by the rewrites of
 SMALL_REWRITES below (docs/conventions.md lists them); EXAMPLES=full runs them as written.
-make examples run in the checkout with BUILD set to the tests' build; `make test` itself runs
+make examples run on the checkout's Makefile (make -C) with BUILD set to the tests' build; `make test` itself runs
 as `make -n test` (it is the command that runs this). Exit 0 when every command behaved as
 announced, 1 otherwise (with each failure's command, status and the end of its stderr).
 """
@@ -153,12 +153,11 @@ class Runner:
             command = re.sub(r"\bsalloc\s+-N\s*\d+", "salloc -N1", command)
             command = re.sub(r"-c\s*\d+(\s+--exclusive)", r"-c1\1", command)
             command = re.sub(r"(make\b.*?)-j\s*\d+", r"\1-j2", command)
-        cwd = self.scratch
         if re.search(r"(^|&&\s*|\s)make\s", " " + command):
-            command, cwd = self.make_command(command), self.src
+            command = self.make_command(command)
         if command.startswith("salloc"):
             self.start_slurm()
-        return command, cwd
+        return command
 
     def make_command(self, command):
         def one(m):
@@ -172,7 +171,8 @@ class Runner:
                 if self.size == "small":
                     words = [w for w in words if w.split("=")[0] not in STUDY_SIZE_VARIABLES]
                     extra.append("STUDY=tiny")
-            return m.group(1) + "make " + ("-n " if dry else "") + " ".join(words + extra)
+            return (m.group(1) + f"make -C {self.src} --no-print-directory " + ("-n " if dry else "")
+                    + " ".join(words + extra))
         # a make command ends at a redirection, a pipe or '&&'
         return re.sub(r"(^|\s)make\s+([^|&>]*)", one, command)
 
@@ -191,10 +191,10 @@ class Runner:
 
     def run(self, page, number, command, comment, expected):
         want = announced_status(comment)
-        actual, cwd = self.rewrite(command)
+        actual = self.rewrite(command)
         start = time.monotonic()
         try:
-            p = subprocess.run(["bash", "-o", "pipefail", "-c", actual], cwd=cwd, env=self.env,
+            p = subprocess.run(["bash", "-o", "pipefail", "-c", actual], cwd=self.scratch, env=self.env,
                                stdin=subprocess.DEVNULL, capture_output=True, text=True,
                                timeout=600)
             status, stdout, stderr = p.returncode, p.stdout, p.stderr
