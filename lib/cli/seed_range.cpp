@@ -7,12 +7,10 @@
 
 namespace cmp::cli {
 
-namespace {
 bool parse_u64(const std::string& s, std::uint64_t& out) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && end == s.data() + s.size() && !s.empty();
 }
-}  // namespace
 
 std::vector<std::uint64_t> parse_seed_range(const std::string& text, const std::string& option) {
   const auto colon = text.find(':');

@@ -10,6 +10,9 @@ namespace cmp::cli {
 // for anything else, an empty range, or more than 10^6 seeds.
 std::vector<std::uint64_t> parse_seed_range(const std::string& text, const std::string& option = "--seeds");
 
+// A whole string as an unsigned 64-bit integer (digits only); false for anything else.
+bool parse_u64(const std::string& s, std::uint64_t& out);
+
 // Replaces every "{key}" in pattern by value: ("cell_{seed}.off", "seed", "7") -> "cell_7.off".
 std::string expand_pattern(const std::string& pattern, const std::string& key, const std::string& value);
 

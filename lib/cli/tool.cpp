@@ -90,11 +90,6 @@ void record_range(Tool& tool, const std::string& flag, const std::string& text, 
   tool.check(b.contains(x), flag, b.describe() + ", got '" + text + "'");
 }
 
-bool parse_u64(const std::string& s, std::uint64_t& out) {
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && end == s.data() + s.size() && !s.empty();
-}
-
 // An App with the toolkit's formatting and a --version flag ("tool <version>").
 std::unique_ptr<CLI::App> make_app(const std::string& tool, const std::string& purpose) {
   auto app = std::make_unique<CLI::App>(purpose, tool);

@@ -237,7 +237,7 @@ struct Problem {
 
 // Unknowns u = (Gamma[, p]); the pole stretch solves the equator condition inside;
 // residuals (eta_equator + eta_bar[, V/V_i - 1]).
-int residuals(const gsl_vector* u, void* params, gsl_vector* r) {
+int contact_residuals(const gsl_vector* u, void* params, gsl_vector* r) {
   auto* pr = static_cast<Problem*>(params);
   const double gamma = std::abs(gsl_vector_get(u, 0));
   const double p = pr->fill == Fill::ConstantVolume ? gsl_vector_get(u, 1) : pr->p_fixed;
@@ -295,7 +295,7 @@ MembraneContact InflatedMembrane::solve(double X, Fill fill, const MembraneConta
   Problem pr{&m, fill, (1 - X) * l_i_, 4.0 / 3.0 * M_PI * l_i_ * l_i_ * l_i_, p_i_ * r0_ / Y, options_.ode_tolerance,
              l0, 1e-3 * (l_i_ - 1.0)};
   const std::size_t n = fill == Fill::ConstantVolume ? 2 : 1;
-  gsl_multiroot_function f{residuals, n, &pr};
+  gsl_multiroot_function f{contact_residuals, n, &pr};
   std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> u(gsl_vector_alloc(n), gsl_vector_free);
   gsl_vector_set(u.get(), 0, gamma);
   if (n == 2) gsl_vector_set(u.get(), 1, p);

@@ -77,7 +77,7 @@ bool shoot(Plate& p, const double* u, double* f, double& w_centre) {
   return true;
 }
 
-int residuals(const gsl_vector* x, void* params, gsl_vector* f) {
+int plate_residuals(const gsl_vector* x, void* params, gsl_vector* f) {
   auto* p = static_cast<Plate*>(params);
   double u[kUnknowns], r[kUnknowns], w;
   for (int i = 0; i < kUnknowns; ++i) u[i] = gsl_vector_get(x, static_cast<std::size_t>(i));
@@ -121,7 +121,7 @@ std::vector<double> von_karman_max_deflection(double nu, const std::vector<doubl
         gsl_vector_set(x.get(), static_cast<std::size_t>(i), first ? u[i] : u[i] + slope * (next - q));
       }
       first = false;
-      gsl_multiroot_function F{residuals, kUnknowns, &p};
+      gsl_multiroot_function F{plate_residuals, kUnknowns, &p};
       int status = gsl_multiroot_fsolver_set(solver.get(), &F, x.get());
       for (int it = 0; status == GSL_SUCCESS; ++it) {
         if (it == 200) {

@@ -10,10 +10,6 @@
 namespace cmp::io {
 
 namespace {
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
 char closing(char open) {
   switch (open) {
     case '"':
@@ -56,7 +52,7 @@ KeyValues parse_key_values(std::string_view text, const std::string& file, long 
     } else if (closing(c)) {
       close = closing(c);
       any = true;
-    } else if (is_space(c)) {
+    } else if (is_field_space(c)) {
       finish();
     } else if (c == '=' && !in_value) {
       in_value = any = true;

@@ -10,13 +10,9 @@
 namespace cmp::io {
 
 namespace {
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
 std::string_view trim_left(std::string_view s) {
   std::size_t i = 0;
-  while (i < s.size() && is_space(s[i])) ++i;
+  while (i < s.size() && is_field_space(s[i])) ++i;
   return s.substr(i);
 }
 }  // namespace
@@ -25,9 +21,9 @@ std::vector<std::string_view> split_whitespace(std::string_view text) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
   while (i < text.size()) {
-    while (i < text.size() && is_space(text[i])) ++i;
+    while (i < text.size() && is_field_space(text[i])) ++i;
     const std::size_t start = i;
-    while (i < text.size() && !is_space(text[i])) ++i;
+    while (i < text.size() && !is_field_space(text[i])) ++i;
     if (i > start) out.push_back(text.substr(start, i - start));
   }
   return out;

@@ -12,6 +12,11 @@
 
 namespace cmp::io {
 
+// The blanks that separate a line's fields (every reader's notion of white space; not \n).
+inline bool is_field_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
 class Input;
 
 // The longest line any reader of lib/io accepts [bytes, without the line break]: 1 MiB.

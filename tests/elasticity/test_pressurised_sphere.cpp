@@ -9,7 +9,7 @@ using namespace cmp::elasticity;
 namespace {
 // Fig. B.4A: R0 = 2.5, t = 0.1, E = 25e6, nu = 1/3.
 const Sheet fig_b4{25e6, 1.0 / 3.0, 0.1};
-const double R0 = 2.5;
+const double kSphereR0 = 2.5;
 }  // namespace
 
 TEST_CASE("the SVK sphere's equilibrium is stationary energy, not the printed B.81", "[elasticity][sphere]") {
@@ -43,14 +43,14 @@ TEST_CASE("SVK sphere strain against the reference table of Fig. B.4A", "[elasti
   for (const auto& r : rows) {
     const double dP = r.p * fig_b4.youngs_modulus;
     INFO("dP/E = " << r.p);
-    CHECK(sphere_strain_linear(fig_b4, R0, dP) == Approx(r.linear).margin(5e-6));
-    CHECK(sphere_strain_printed(fig_b4, R0, dP) == Approx(r.printed).margin(5e-6));
-    CHECK(sphere_stretch(fig_b4, R0, dP) - 1 == Approx(r.corrected).margin(5e-6));
+    CHECK(sphere_strain_linear(fig_b4, kSphereR0, dP) == Approx(r.linear).margin(5e-6));
+    CHECK(sphere_strain_printed(fig_b4, kSphereR0, dP) == Approx(r.printed).margin(5e-6));
+    CHECK(sphere_stretch(fig_b4, kSphereR0, dP) - 1 == Approx(r.corrected).margin(5e-6));
   }
   // The printed B.82 solves its own cubic.
-  const double e = sphere_strain_printed(fig_b4, R0, 0.01 * fig_b4.youngs_modulus);
+  const double e = sphere_strain_printed(fig_b4, kSphereR0, 0.01 * fig_b4.youngs_modulus);
   CHECK(e + 1.5 * e * e + 0.5 * e * e * e == Approx(0.01 * 25 * (2.0 / 3.0) / 2).epsilon(1e-12));
   // All three agree at small strain (relative difference ~ eps_r).
   const double small = 1e-7 * fig_b4.youngs_modulus;
-  CHECK(sphere_stretch(fig_b4, R0, small) - 1 == Approx(sphere_strain_linear(fig_b4, R0, small)).epsilon(1e-5));
+  CHECK(sphere_stretch(fig_b4, kSphereR0, small) - 1 == Approx(sphere_strain_linear(fig_b4, kSphereR0, small)).epsilon(1e-5));
 }

@@ -12,7 +12,7 @@
 using namespace cmp::voxel;
 
 namespace {
-std::string write_file(const std::string& name, const std::string& text) {
+std::string write_input(const std::string& name, const std::string& text) {
   const auto path = (std::filesystem::temp_directory_path() / ("cmp_voxel_run_" + name)).string();
   std::ofstream(path) << text;
   return path;
@@ -45,19 +45,19 @@ TEST_CASE("percolate_runs go packings then scales then deltas", "[voxel][percola
 }
 
 TEST_CASE("read_packing_frames gives every frame of every input in order", "[voxel][percolate_run]") {
-  const auto two = write_file("two.xyz", one_sphere + one_sphere), one = write_file("one.xyz", one_sphere);
+  const auto two = write_input("two.xyz", one_sphere + one_sphere), one = write_input("one.xyz", one_sphere);
   const auto frames = read_packing_frames({one, two}, {1.0, 0});
   REQUIRE(frames.packings.size() == 3);
   CHECK(frames.input_of == std::vector<std::size_t>{0, 1, 1});
   CHECK(frames.frame_of == std::vector<int>{0, 0, 1});
   CHECK(frames.several_frames);
   CHECK_FALSE(read_packing_frames({one, one}, {1.0, 0}).several_frames);
-  CHECK_THROWS_AS(read_packing_frames({one, write_file("bad.xyz", "1\nno lattice\nX 1 1 1 0.5\n")}, {1.0, 0}),
+  CHECK_THROWS_AS(read_packing_frames({one, write_input("bad.xyz", "1\nno lattice\nX 1 1 1 0.5\n")}, {1.0, 0}),
                   cmp::InputError);
 }
 
 TEST_CASE("check_percolate_plan refuses a delta larger than the box and a scale of shells", "[voxel][percolate_run]") {
-  const auto frames = read_packing_frames({write_file("a.xyz", one_sphere)}, {1.0, 0});
+  const auto frames = read_packing_frames({write_input("a.xyz", one_sphere)}, {1.0, 0});
   CHECK_NOTHROW(check_percolate_plan(frames.packings, plan_of({0.5, 2}, {"0.5", "2"}, {1, 1.2}, {"1", "1.2"})));
   CHECK_THROWS_AS(check_percolate_plan(frames.packings, plan_of({0.5, 2.5}, {"0.5", "2.50"}, {1}, {"1"})),
                   cmp::UsageError);
@@ -70,7 +70,7 @@ TEST_CASE("check_percolate_plan refuses a delta larger than the box and a scale 
 }
 
 TEST_CASE("run_percolate gives a row per run and an image only when asked", "[voxel][percolate_run]") {
-  const auto frames = read_packing_frames({write_file("b.xyz", one_sphere)}, {1.0, 0});
+  const auto frames = read_packing_frames({write_input("b.xyz", one_sphere)}, {1.0, 0});
   auto plan = plan_of({0.5, 0.25}, {"0.50", "0.25"}, {1, 1.5}, {"1.0", "1.5"});
   const auto runs = percolate_runs(frames.packings.size(), plan.scales.size(), plan.deltas.size());
   std::vector<PercolateRunResult> results;
@@ -102,7 +102,7 @@ TEST_CASE("run_percolate gives a row per run and an image only when asked", "[vo
 }
 
 TEST_CASE("read_percolation_tables reads samples and refuses a table given twice", "[voxel][percolation_table]") {
-  const auto a = write_file("a.csv",
+  const auto a = write_input("a.csv",
                             "# connectivity=6\nfile,frame,kind,particles,delta,scale,porosity,percolates\n"
                             "p.xyz,0,spheres,64,0.1,1,0.7,1\np.xyz,0,spheres,64,0.1,1.2,0.5,0\n");
   const auto t = read_percolation_tables({a}, "porosity");
@@ -115,6 +115,6 @@ TEST_CASE("read_percolation_tables reads samples and refuses a table given twice
   CHECK(t.same == std::map<std::string, std::string>{{"connectivity", "6"}, {"kind", "spheres"}});
   CHECK_THROWS_WITH(read_percolation_tables({a, a}, "porosity"), Catch::Contains("is also at"));
   CHECK_THROWS_WITH(read_percolation_tables({a}, "porosity_voxels"), Catch::Contains("no column 'porosity_voxels'"));
-  const auto b = write_file("b.csv", "# connectivity=26\nparticles,delta,porosity,percolates\n64,0.1,0.6,1\n");
+  const auto b = write_input("b.csv", "# connectivity=26\nparticles,delta,porosity,percolates\n64,0.1,0.6,1\n");
   CHECK_THROWS_WITH(read_percolation_tables({a, b}, "porosity"), Catch::Contains("connectivity '26' differs from '6'"));
 }
