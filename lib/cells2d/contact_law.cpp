@@ -1,6 +1,6 @@
 #include "cells2d/contact_law.hpp"
 
-#include "core/errors.hpp"
+#include "core/registry.hpp"
 
 #include <cmath>
 
@@ -20,12 +20,7 @@ const std::vector<ContactLawStyle>& contact_laws() {
 }
 
 const ContactLawStyle& contact_law(const std::string& name) {
-  std::string names;
-  for (const auto& s : contact_laws()) {
-    if (s.name == name) return s;
-    names += (names.empty() ? "" : ", ") + s.name;
-  }
-  throw UsageError("unknown contact law '" + name + "' (choose one of " + names + ")");
+  return find_style(contact_laws(), name, "contact law");
 }
 
 }  // namespace cmp::cells2d

@@ -2,31 +2,25 @@
 
 #include "fit/models.hpp"
 
+#include "core/registry.hpp"
+
 #include <fmt/format.h>
 
 namespace cmp::fit {
 
 void write_model_list(std::ostream& out) {
+  // The listing every tool prints (core/registry.hpp), then what a fit needs to know.
+  out << "kind,name,description,formula,domain,parameters,x_columns,y_columns\n";
   for (const auto& m : models()) {
-    out << m.name << ": " << m.formula << "\n    " << m.source << "\n    domain " << m.domain
-        << "; default columns --x " << fmt::format("{}", fmt::join(m.x_columns, " or ")) << " --y "
-        << fmt::format("{}", fmt::join(m.y_columns, " or ")) << " (the first present)\n";
+    std::vector<std::string> params;
     for (const auto& p : m.params)
-      out << fmt::format("    {:<11} {}{}\n", p.name, p.meaning,
-                         p.fixed_by_default ? fmt::format(" (fixed at {} unless --free {})", p.start, p.name) : "");
+      params.push_back(fmt::format("{}: {}{}", p.name, p.meaning,
+                                   p.fixed_by_default ? fmt::format(" (fixed at {} unless --free {})", p.start, p.name) : ""));
+    out << "model," << m.name << ',' << quoted_field(m.source) << ',' << quoted_field(m.formula) << ','
+        << quoted_field(m.domain) << ',' << quoted_field(fmt::format("{}", fmt::join(params, "; "))) << ','
+        << quoted_field(fmt::format("{}", fmt::join(m.x_columns, " "))) << ','
+        << quoted_field(fmt::format("{}", fmt::join(m.y_columns, " "))) << '\n';
   }
-  out << "columns (as percolate, percolate sweep, lbflow and kcfit write them):\n"
-         "    porosity             geometric porosity of a packing (percolate)\n"
-         "    percolates           0/1: the void percolates along the flow axis (percolate, one row per run)\n"
-         "    probability          fraction percolating per porosity bin, probability_error its binomial\n"
-         "                         standard error (percolate sweep)\n"
-         "    delta                voxel side in D_0\n"
-         "    phi_c, phi_c_error   threshold per group (kcfit --model sigmoid --group-by delta)\n"
-         "    permeability_delta2  permeability in units of delta^2 (lbflow's lattice units);\n"
-         "                         permeability_d02 in D_0^2\n"
-         "    rh_sites_d0          hydraulic radius in D_0 (percolate)\n"
-         "    tortuosity           hydraulic tortuosity tau_H (lbflow)\n"
-         "    <y>_error            standard error of y: weights the linear loss (--sigma)\n";
 }
 
 }  // namespace cmp::fit

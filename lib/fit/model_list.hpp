@@ -1,6 +1,7 @@
 #pragma once
-// kcfit --list-models: every model of models.hpp with its formula, source, domain, default
-// columns and parameters, then the CSV columns the tools write that kcfit reads.
+// kcfit --list-models: every model of models.hpp as CSV, the columns every tool's listing has
+// (kind,name,description; the description is where in the thesis) and then its formula, domain,
+// parameters and default x and y columns (the first present in the input wins).
 #include <ostream>
 
 namespace cmp::fit {

@@ -1,6 +1,7 @@
 #include "fit/models.hpp"
 
 #include "core/errors.hpp"
+#include "core/registry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -284,13 +285,6 @@ const std::vector<Model>& models() {
   return all;
 }
 
-const Model& find_model(const std::string& name) {
-  std::string names;
-  for (const auto& m : models()) {
-    if (m.name == name) return m;
-    names += (names.empty() ? "" : ", ") + m.name;
-  }
-  throw UsageError("--model: unknown model '" + name + "'; models: " + names + " (kcfit --list-models)");
-}
+const Model& find_model(const std::string& name) { return find_style(models(), name, "model"); }
 
 }  // namespace cmp::fit

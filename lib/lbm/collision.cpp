@@ -3,6 +3,7 @@
 #include "lbm/collision_styles.hpp"
 
 #include "core/errors.hpp"
+#include "core/registry.hpp"
 
 #include <cmath>
 
@@ -24,12 +25,7 @@ const CollisionStyle kStyles[] = {
 std::span<const CollisionStyle> collision_styles() { return kStyles; }
 
 const CollisionStyle& collision_style(const std::string& name) {
-  std::string known;
-  for (const CollisionStyle& s : kStyles) {
-    if (name == s.name) return s;
-    known += (known.empty() ? "" : ", ") + std::string(s.name);
-  }
-  throw UsageError("unknown collision model '" + name + "' (known: " + known + ")");
+  return find_style(collision_styles(), name, "collision model");
 }
 
 void check_collision_parameters(const CollisionParameters& p) {

@@ -6,6 +6,7 @@
 #include "shell/sphere_inflation.hpp"
 
 #include "core/errors.hpp"
+#include "core/registry.hpp"
 #include "elasticity/clamped_plate.hpp"
 #include "io/csv.hpp"
 #include "spheremesh/annealing.hpp"
@@ -303,20 +304,11 @@ std::vector<std::string> mechanics_benchmark_names() {
   return names;
 }
 
-void check_mechanics_benchmark(const std::string& name) {
-  std::string known;
-  for (const auto& c : kCases) {
-    if (name == c.name) return;
-    known += (known.empty() ? "" : ", ") + std::string(c.name);
-  }
-  throw UsageError("unknown benchmark '" + name + "' (known: " + known + ")");
-}
+void check_mechanics_benchmark(const std::string& name) { find_style(kCases, name, "benchmark"); }
 
 void run_mechanics_benchmark(const std::string& name, bool quick, std::ostream& out, const std::string& provenance,
                              const std::function<void(const std::string&)>& note) {
-  check_mechanics_benchmark(name);
-  for (const auto& c : kCases)
-    if (name == c.name) c.run(quick, out, provenance, note);
+  find_style(kCases, name, "benchmark").run(quick, out, provenance, note);
 }
 
 }  // namespace cmp::shell

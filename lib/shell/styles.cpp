@@ -7,7 +7,7 @@
 #include "shell/turgor_pressure.hpp"
 #include "shell/vertex_face_contacts.hpp"
 
-#include "core/errors.hpp"
+#include "core/registry.hpp"
 
 namespace cmp::shell {
 
@@ -72,16 +72,6 @@ const ContactStyle kContact[] = {
      }},
 };
 
-template <class S>
-const S& find(std::span<const S> table, const std::string& name, const char* kind) {
-  std::string known;
-  for (const S& s : table) {
-    if (name == s.name) return s;
-    known += (known.empty() ? "" : ", ") + std::string(s.name);
-  }
-  throw UsageError(std::string("unknown ") + kind + " model '" + name + "' (known: " + known + ")");
-}
-
 }  // namespace
 
 std::span<const StretchingStyle> stretching_styles() { return kStretching; }
@@ -89,20 +79,17 @@ std::span<const BendingStyle> bending_styles() { return kBending; }
 std::span<const PressureStyle> pressure_styles() { return kPressure; }
 std::span<const ContactStyle> contact_styles() { return kContact; }
 
-const StretchingStyle& stretching_style(const std::string& name) { return find(stretching_styles(), name, "stretching"); }
-const BendingStyle& bending_style(const std::string& name) { return find(bending_styles(), name, "bending"); }
-const PressureStyle& pressure_style(const std::string& name) { return find(pressure_styles(), name, "pressure"); }
-const ContactStyle& contact_style(const std::string& name) { return find(contact_styles(), name, "contact"); }
+const StretchingStyle& stretching_style(const std::string& name) { return find_style(stretching_styles(), name, "stretching model"); }
+const BendingStyle& bending_style(const std::string& name) { return find_style(bending_styles(), name, "bending model"); }
+const PressureStyle& pressure_style(const std::string& name) { return find_style(pressure_styles(), name, "pressure model"); }
+const ContactStyle& contact_style(const std::string& name) { return find_style(contact_styles(), name, "contact model"); }
 
 void write_model_list(std::ostream& out) {
-  const auto print = [&](const char* kind, const auto& table) {
-    for (const auto& s : table) out << kind << "," << s.name << ",\"" << s.description << "\"\n";
-  };
-  out << "kind,name,description\n";
-  print("stretching", stretching_styles());
-  print("bending", bending_styles());
-  print("pressure", pressure_styles());
-  print("contact", contact_styles());
+  write_style_header(out);
+  write_styles(out, "stretching", stretching_styles());
+  write_styles(out, "bending", bending_styles());
+  write_styles(out, "pressure", pressure_styles());
+  write_styles(out, "contact", contact_styles());
 }
 
 }  // namespace cmp::shell

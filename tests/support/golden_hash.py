@@ -5,8 +5,10 @@ is reorganised, but the version in provenance lines, timings and thread counts m
 
 Taken out: the program's version (x.y.z-<commit>[-dirty]); comment or header lines naming
 a time, date, host or thread count; CSV columns of wall time (seconds, *_seconds, *_s);
-key=value fields of those names inside an extended-XYZ comment line; VTK's title line is
-kept (it carries the provenance, version replaced)."""
+key=value fields of those names inside an extended-XYZ comment line; the checkout's path
+(--src, in commands that name its data files); a legacy VTK file's title line (the provenance,
+cut at 256 characters, so where it is cut moves with the lengths of the version and the path).
+Usage: golden_hash.py [--src DIR] FILE..."""
 import hashlib
 import re
 import sys
@@ -40,9 +42,18 @@ def normalise(data: bytes) -> bytes:
 
 
 def main() -> None:
-    for path in sys.argv[1:]:
+    args = sys.argv[1:]
+    src = None
+    if args[:1] == ["--src"]:
+        src, args = args[1].rstrip("/").encode(), args[2:]
+    for path in args:
         with open(path, "rb") as f:
             data = f.read()
+        if src:
+            data = data.replace(src, b"SRC")
+        if data.startswith(b"# vtk DataFile"):
+            head, title, rest = data.split(b"\n", 2)
+            data = head + b"\n" + rest
         binary = b"\0" in data[:4096]
         digest = hashlib.sha256(VERSION.sub(b"VERSION", data) if binary else normalise(data)).hexdigest()[:16]
         print(path, digest)

@@ -81,7 +81,7 @@ check_hashes() {
   local case=$1 want="$src/tests/data/golden/$1.txt"
   local files; files=$(find . -type f ! -name stderr.log ! -name stdout.txt ! -name stderr.txt | sed 's|^\./||' | LC_ALL=C sort)
   # shellcheck disable=SC2086
-  /usr/bin/python3 "$src/tests/support/golden_hash.py" $files >hashes.txt || fail "hashing failed"
+  /usr/bin/python3 "$src/tests/support/golden_hash.py" --src "$src" $files >hashes.txt || fail "hashing failed"
   if [ "${GOLDEN_RECORD:-0}" = 1 ]; then
     cp hashes.txt "$want"
     echo "recorded $want" >&2

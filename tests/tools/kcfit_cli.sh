@@ -31,17 +31,16 @@ case_help() {
 case_list_models() {
   "$kcfit" --list-models >models.txt || fail "--list-models"
   for m in kc-classical kc-percolation kc-fixed power hydraulic-radius tortuosity threshold sigmoid; do
-    grep -q "^$m: " models.txt || fail "--list-models lacks $m"
+    grep -q "^model,$m," models.txt || fail "--list-models lacks $m"
   done
   grep -q "gamma + 0.76" models.txt || fail "Eq. 5.8 formula missing"
   grep -q "fixed at -0.38 unless --free e" models.txt || fail "tortuosity exponent note missing"
-  # The default columns are those percolate and lbflow write.
-  grep -q "default columns --x porosity --y percolates or probability" models.txt || fail "sigmoid columns"
-  grep -q "default columns --x delta --y phi_c" models.txt || fail "threshold columns"
-  grep -q "default columns --x porosity --y permeability_delta2 or permeability_d02 or permeability" models.txt ||
+  # The default columns are those percolate and lbflow write (the first present wins).
+  grep -q '^model,sigmoid,.*,"porosity","percolates probability"$' models.txt || fail "sigmoid columns"
+  grep -q '^model,threshold,.*,"delta","phi_c"$' models.txt || fail "threshold columns"
+  grep -q '^model,kc-percolation,.*,"porosity","permeability_delta2 permeability_d02 permeability"$' models.txt ||
     fail "permeability columns"
-  grep -q "default columns --x porosity --y rh_sites_d0 or hydraulic_radius" models.txt || fail "R_h columns"
-  grep -q "^    permeability_delta2  permeability in units of delta^2" models.txt || fail "column meanings"
+  grep -q '^model,hydraulic-radius,.*,"porosity","rh_sites_d0 hydraulic_radius"$' models.txt || fail "R_h columns"
 }
 case_fit_csv() {
   "$kcfit" "$flow" --model kc-percolation --x porosity --y permeability --loss log >fit.csv 2>err.txt || fail "fit"
@@ -279,7 +278,7 @@ case_bad_numbers_at_once() {
   [ $? -eq 2 ] || fail "exit status"
   for p in "--bootstrap: must lie in \[0, 10000000\], got '-3'" "--max-iter: 'abc' is not an integer" \
     "--seed: 'x' is not a non-negative integer" "--threads: must not be negative, got '-1'" \
-    "--model: unknown model 'kozeny'; .*" "--sigma: weights the linear loss only, not --loss log" \
+    "--model: unknown model 'kozeny' (known: .*)" "--sigma: weights the linear loss only, not --loss log" \
     "run 'kcfit --help' for the options"; do
     grep -qx -- "kcfit: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
   done

@@ -48,7 +48,7 @@ case_help() {
   "$lbflow" --help | grep -q -- "--checkpoint-every" || fail "help lacks --checkpoint-every"
   "$lbflow" --version | grep -Eq "^lbflow [0-9]" || fail "--version"
   "$lbflow" --list-models > models.txt || fail "--list-models"
-  for m in mrt trt bgk; do grep -q "^$m " models.txt || fail "--list-models lacks $m: $(cat models.txt)"; done
+  for m in mrt trt bgk; do grep -q "^collision,$m," models.txt || fail "--list-models lacks $m: $(cat models.txt)"; done
 }
 case_cluster_image() {
   cluster_vtk

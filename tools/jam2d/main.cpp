@@ -9,6 +9,7 @@
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "core/parallel_for.hpp"
+#include "core/registry.hpp"
 #include "io/atomic_output.hpp"
 #include "io/csv.hpp"
 #include "io/xyz.hpp"
@@ -32,7 +33,7 @@ struct Options {
   double dphi = 0;
   std::string packing_output, csv_output = "-", trajectory_output;
   long every = 0;
-  bool fixed_step = false, double_step = false;
+  bool fixed_step = false, double_step = false, list_models = false;
   std::vector<std::string> inputs;
   std::string output = "-";
   std::vector<double> dphis, P0s;
@@ -40,11 +41,8 @@ struct Options {
 
 void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
   tool.add_double(sub, "--box", o.growth.box, "side L of the periodic square box [sigma]", cli::positive());
-  sub.add_option("--contact", o.contact, "contact law between lobes: " + [] {
-    std::string s;
-    for (const auto& l : contact_laws()) s += (s.empty() ? "" : "; ") + l.name + " (" + l.description + ")";
-    return s;
-  }());
+  sub.add_option("--contact", o.contact, "contact law between lobes: " + style_names(contact_laws()) + " (--list-models)")
+      ->capture_default_str();
   tool.add_double(sub, "--dt0", o.growth.dt0, "growth step dt_0 [1/gamma0]", cli::positive());
   sub.add_flag("--fixed-step", o.fixed_step, "no adaptive step beyond jamming (thesis Fig. S3.5)");
   sub.add_flag("--double-step", o.double_step,
@@ -186,8 +184,9 @@ int main(int argc, char** argv) {
     Options o;
     cli::Tool tool("jam2d", "Budding cells in 2D: growth-driven jamming in a periodic box (thesis Ch. 3).");
     auto* app = &tool.app();
-    app->require_subcommand(1);
+    app->require_subcommand(0, 1);
     tool.add_common(*app, o.common, cli::Tool::kQuiet);
+    app->add_flag("--list-models", o.list_models, "list the contact laws between lobes (CSV) and exit");
 
     auto* grow = app->add_subcommand("grow", "grow a colony from two cells until jammed (and beyond); CSV row per accepted step");
     add_growth_options(tool, *grow, o);
@@ -215,6 +214,12 @@ int main(int argc, char** argv) {
     tool.add_common(*sweep, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
     tool.parse(argc, argv);
+    if (o.list_models) {
+      write_style_header(std::cout);
+      write_styles(std::cout, "contact", contact_laws());
+      return 0;
+    }
+    tool.check(app->get_subcommands().size() == 1, "", "a subcommand is required: grow, moduli or sweep (or --list-models)");
     std::vector<std::uint64_t> seeds;
     if (grow->parsed()) {
       check_growth(tool, o);

@@ -9,6 +9,7 @@
 #include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
+#include "core/registry.hpp"
 #include "flowrun/checkpoint_file.hpp"
 #include "flowrun/flow_batch.hpp"
 #include "flowrun/flow_case.hpp"
@@ -101,7 +102,8 @@ void declare(cli::Tool& tool, Options& o) {
 }
 
 void print_models() {
-  for (const auto& s : lbm::collision_styles()) std::cout << fmt::format("{:<8} {}\n", s.name, s.description);
+  cmp::write_style_header(std::cout);
+  cmp::write_styles(std::cout, "collision", lbm::collision_styles());
 }
 
 struct Plan {
