@@ -1,47 +1,31 @@
 #pragma once
-// Contact laws between lobes of different cells: the energy styles of the cell model. A law
+// Contact laws between lobes of different cells: the contact styles of the cell model. A law
 // gives the pair energy V(delta) and the repulsive force magnitude dV/d delta for an overlap
 // delta = (sigma_ik + sigma_jl)/2 - |r_ik - r_jl| > 0 (zero otherwise), in units of k sigma^2
-// and k sigma. One table (contact_laws()) lists every style; --list-models and --contact come
-// from it, and the generic test harness checks each one (forces and torques = minus the
-// numerical gradient of the energy).
+// and k sigma. Each law is a struct in a header of its own (harmonic_law.hpp, hertz_law.hpp:
+// name, description, energy, force) and one line of the table in contact_law.cpp, which also
+// instantiates the force loop for it; --contact and --list-models come from the table, and the
+// generic harness (tests/forcefield) checks every entry.
 #include <string>
 #include <vector>
 
 namespace cmp::cells2d {
 
-// The harmonic repulsion of the thesis (S2.13, S3.2): V = k delta^2 / 2, force k delta.
-struct HarmonicLaw {
-  static double energy(double overlap) { return 0.5 * overlap * overlap; }
-  static double force(double overlap) { return overlap; }
-};
+class ContactEngine;
+struct Cell;
 
-// Hertz-like repulsion V = (2/5) k delta^(5/2), force k delta^(3/2) (the soft-sphere law of
-// the thesis's Chapter 5 in this model's units; not used by the thesis for budding cells).
-struct HertzLaw {
-  static double energy(double overlap);
-  static double force(double overlap);
-};
-
-// Evaluates a law for a vector of overlaps (used by tests and reports; the force loops are
-// templates instantiated per law, see contacts.hpp).
 struct ContactLawStyle {
-  std::string name;
-  std::string description;
-  int index;  // position in contact_laws(): selects the instantiated force loop
+  const char* name;
+  const char* description;
   double (*energy)(double overlap);
   double (*force)(double overlap);
+  // The engine's force loop compiled for this law (ContactEngine::kernel<Law>).
+  double (*kernel)(const ContactEngine& engine, const std::vector<Cell>& cells, double* force);
 };
 
 // Every registered contact law, the thesis's first.
 const std::vector<ContactLawStyle>& contact_laws();
-// The law of that name; throws cmp::UsageError naming the choices otherwise.
+// The law of that name; throws cmp::UsageError "unknown contact law 'x' (known: ...)".
 const ContactLawStyle& contact_law(const std::string& name);
-// Calls f(Law{}) with the law type of a style (the dispatch to a template).
-template <class F>
-decltype(auto) with_contact_law(const ContactLawStyle& style, F&& f) {
-  if (style.index == 1) return f(HertzLaw{});
-  return f(HarmonicLaw{});
-}
 
 }  // namespace cmp::cells2d

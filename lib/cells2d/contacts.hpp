@@ -73,6 +73,10 @@ class ContactEngine {
 
   long list_builds() const { return list_.builds(); }
 
+  // The force loop for one law (contact_kernel.hpp; a registered law points at it).
+  template <class Law>
+  static double kernel(const ContactEngine& engine, const std::vector<Cell>& cells, double* force);
+
  private:
   // Lobe centres and diameters from the cells; rebuilds the Verlet list when needed.
   void place_lobes(const std::vector<Cell>& cells);

@@ -7,6 +7,7 @@
 #include "cli/progress.hpp"
 #include "core/errors.hpp"
 #include "core/fnv1a.hpp"
+#include "forcefield/hertz.hpp"
 #include "io/atomic_output.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/csv.hpp"
@@ -112,7 +113,7 @@ std::string penetration_advice(const shell::ShellSystem& s, const shell::ShellMo
   double load = 0;
   for (long v = 0; v < s.vertex_count(); ++v) load = std::max(load, std::abs(turgor[shell_of[v]]) * area[v]);
   const double delta = m.contact.contact_distance;
-  const double barrier = shell::hertz_force(delta, m.contact.vertex_effective_modulus(), 0.5 * delta);
+  const double barrier = hertz_force(hertz_prefactor(m.contact.vertex_effective_modulus(), 0.5 * delta), delta);
   return fmt::format("the face barrier holds a vertex with at most {:.3g} E D0^2 (delta = {}), the turgor presses one "
                      "with up to {:.3g}: raise --contact-distance, refine the mesh or lower --step",
                      barrier / m.material.youngs_modulus, io::format_number(delta), load / m.material.youngs_modulus);

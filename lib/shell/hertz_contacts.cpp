@@ -125,7 +125,7 @@ double VertexContacts::energy(std::span<const double> x) const {
   check_sizes(x);
   double sum = 0;
   for_each_contact(x, [&](int, int, const Eigen::Vector3d&, double r) {
-    sum += hertz_energy(2.0 * radius_ - r, estar_, 0.5 * radius_);
+    sum += hertz_energy(hertz_prefactor(estar_, 0.5 * radius_), 2.0 * radius_ - r);
   });
   return sum;
 }
@@ -135,7 +135,7 @@ void VertexContacts::add_gradient(std::span<const double> x, std::span<double> g
   double* G = g.data();
   for_each_contact(x, [&](int i, int j, const Eigen::Vector3d& d, double r) {
     // dU/dx_i = -U'(h) d/r with d = x_i - x_j.
-    const double s = -hertz_force(2.0 * radius_ - r, estar_, 0.5 * radius_) / r;
+    const double s = -hertz_force(hertz_prefactor(estar_, 0.5 * radius_), 2.0 * radius_ - r) / r;
     for (int a = 0; a < 3; ++a) {
       G[3 * i + a] += s * d[a];
       G[3 * j + a] -= s * d[a];
@@ -161,7 +161,7 @@ std::vector<ShellContactTerm::Touch> VertexContacts::touches(std::span<const dou
   std::vector<Touch> out;
   for_each_contact(x, [&](int i, int j, const Eigen::Vector3d& d, double r) {
     const double h = 2.0 * radius_ - r;
-    out.push_back({i, {j, -1, -1}, Eigen::Vector3d::UnitX(), d, r, h, hertz_force(h, estar_, 0.5 * radius_)});
+    out.push_back({i, {j, -1, -1}, Eigen::Vector3d::UnitX(), d, r, h, hertz_force(hertz_prefactor(estar_, 0.5 * radius_), h)});
   });
   return out;
 }
@@ -190,7 +190,7 @@ double WallContacts::energy(std::span<const double> x) const {
   const double* X = x.data();
   double sum = 0;
   for (const Plane& w : walls_)
-    for (long i = 0; i < vertex_count_; ++i) sum += hertz_energy(radius_ - w.distance(X + 3 * i), estar_, radius_);
+    for (long i = 0; i < vertex_count_; ++i) sum += hertz_energy(hertz_prefactor(estar_, radius_), radius_ - w.distance(X + 3 * i));
   return sum;
 }
 
@@ -200,7 +200,7 @@ void WallContacts::add_gradient(std::span<const double> x, std::span<double> g) 
   double* G = g.data();
   for (const Plane& w : walls_)
     for (long i = 0; i < vertex_count_; ++i) {
-      const double f = hertz_force(radius_ - w.distance(X + 3 * i), estar_, radius_);
+      const double f = hertz_force(hertz_prefactor(estar_, radius_), radius_ - w.distance(X + 3 * i));
       if (f == 0) continue;
       for (int a = 0; a < 3; ++a) G[3 * i + a] -= f * w.normal[a];  // dh/dx = -normal
     }
@@ -212,7 +212,7 @@ std::vector<double> WallContacts::wall_forces(std::span<const double> x) const {
   std::vector<double> out;
   for (const Plane& w : walls_) {
     double sum = 0;
-    for (long i = 0; i < vertex_count_; ++i) sum += hertz_force(radius_ - w.distance(X + 3 * i), estar_, radius_);
+    for (long i = 0; i < vertex_count_; ++i) sum += hertz_force(hertz_prefactor(estar_, radius_), radius_ - w.distance(X + 3 * i));
     out.push_back(sum);
   }
   return out;

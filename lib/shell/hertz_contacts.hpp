@@ -17,6 +17,7 @@
 #include "shell/shell_parameters.hpp"
 
 #include "mesh/tri_mesh.hpp"
+#include "forcefield/hertz.hpp"
 #include "neighbours/box.hpp"
 #include "neighbours/cell_grid.hpp"
 
@@ -28,10 +29,6 @@
 #include <vector>
 
 namespace cmp::shell {
-
-// Hertz energy (8/15) E* sqrt(R*) h^(5/2) of an overlap h > 0, and its derivative in h.
-inline double hertz_energy(double h, double effective_modulus, double effective_radius);
-inline double hertz_force(double h, double effective_modulus, double effective_radius);
 
 class VertexContacts final : public ShellContactTerm {
  public:
@@ -111,12 +108,5 @@ neighbours::Box contact_box(const mesh::VertexMatrix& X, double cutoff,
 // empty cells).
 neighbours::CellGrid contact_grid(const mesh::VertexMatrix& X, double cutoff,
                                   const std::optional<ShellContactTerm::BoxSides>& sides, const char* style);
-
-inline double hertz_energy(double h, double effective_modulus, double effective_radius) {
-  return h > 0 ? (8.0 / 15.0) * effective_modulus * std::sqrt(effective_radius) * h * h * std::sqrt(h) : 0.0;
-}
-inline double hertz_force(double h, double effective_modulus, double effective_radius) {
-  return h > 0 ? (4.0 / 3.0) * effective_modulus * std::sqrt(effective_radius) * h * std::sqrt(h) : 0.0;
-}
 
 }  // namespace cmp::shell

@@ -34,6 +34,11 @@ struct PressureParameters {
 // Throws cmp::UsageError when Pi is not finite.
 void validate(const PressureParameters& p, const char* style);
 
+// Fixed external forces on the vertices (a dead load).
+struct LoadParameters {
+  std::vector<double> forces;  // 3 #V doubles [force units], the force on every vertex; empty: none
+};
+
 // A rigid plane x . normal = point . normal; the shells live on the side the unit normal
 // points to.
 struct Plane {

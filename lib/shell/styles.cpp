@@ -1,5 +1,6 @@
 #include "shell/styles.hpp"
 
+#include "shell/dead_load.hpp"
 #include "shell/dihedral_hinges.hpp"
 #include "shell/edge_springs.hpp"
 #include "shell/hertz_contacts.hpp"
@@ -72,17 +73,26 @@ const ContactStyle kContact[] = {
      }},
 };
 
+const LoadStyle kLoad[] = {
+    {"load", "dead load: fixed forces f_i on the vertices, E = -sum_i f_i . x_i (the plate benchmarks' loads, B.5.3-B.5.4)",
+     [](const mesh::TriMesh& r, const LoadParameters& p) -> std::unique_ptr<EnergyTerm> {
+       return std::make_unique<DeadLoad>(r.V.rows(), p.forces.empty() ? std::vector<double>(3 * r.V.rows(), 0.0) : p.forces);
+     }},
+};
+
 }  // namespace
 
 std::span<const StretchingStyle> stretching_styles() { return kStretching; }
 std::span<const BendingStyle> bending_styles() { return kBending; }
 std::span<const PressureStyle> pressure_styles() { return kPressure; }
 std::span<const ContactStyle> contact_styles() { return kContact; }
+std::span<const LoadStyle> load_styles() { return kLoad; }
 
 const StretchingStyle& stretching_style(const std::string& name) { return find_style(stretching_styles(), name, "stretching model"); }
 const BendingStyle& bending_style(const std::string& name) { return find_style(bending_styles(), name, "bending model"); }
 const PressureStyle& pressure_style(const std::string& name) { return find_style(pressure_styles(), name, "pressure model"); }
 const ContactStyle& contact_style(const std::string& name) { return find_style(contact_styles(), name, "contact model"); }
+const LoadStyle& load_style(const std::string& name) { return find_style(load_styles(), name, "load model"); }
 
 void write_model_list(std::ostream& out) {
   write_style_header(out);
@@ -90,6 +100,7 @@ void write_model_list(std::ostream& out) {
   write_styles(out, "bending", bending_styles());
   write_styles(out, "pressure", pressure_styles());
   write_styles(out, "contact", contact_styles());
+  write_styles(out, "load", load_styles());
 }
 
 }  // namespace cmp::shell

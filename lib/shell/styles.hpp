@@ -1,7 +1,7 @@
 #pragma once
 // The registered shell styles, one explicit table per kind. A CLI lists a table for
 // --list-models and builds a style by name from the same entries; the generic test harness
-// (tests/shell/test_styles_gradient.cpp) checks every entry of every table.
+// (tests/forcefield) checks every entry of every table against its energy.
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -27,17 +27,20 @@ using StretchingStyle = Style<MaterialParameters>;
 using BendingStyle = Style<MaterialParameters>;
 using PressureStyle = Style<PressureParameters>;
 using ContactStyle = Style<ContactParameters>;
+using LoadStyle = Style<LoadParameters>;
 
 std::span<const StretchingStyle> stretching_styles();
 std::span<const BendingStyle> bending_styles();
 std::span<const PressureStyle> pressure_styles();
 std::span<const ContactStyle> contact_styles();
+std::span<const LoadStyle> load_styles();
 
 // The entry called `name`; throws cmp::UsageError "unknown <kind> model 'x' (known: a, b)".
 const StretchingStyle& stretching_style(const std::string& name);
 const BendingStyle& bending_style(const std::string& name);
 const PressureStyle& pressure_style(const std::string& name);
 const ContactStyle& contact_style(const std::string& name);
+const LoadStyle& load_style(const std::string& name);
 
 // Every registered style of every kind as CSV (kind,name,description), from the tables above:
 // what `shellpack shell --list-models` prints.

@@ -249,7 +249,7 @@ double VertexFaceContacts::energy(std::span<const double> x) const {
   double total = 0;
   for (const auto& chunk : records_) {
     double sum = 0;
-    for (const Record& r : chunk) sum += hertz_energy(delta_ - r.r, estar_, rstar_);
+    for (const Record& r : chunk) sum += hertz_energy(hertz_prefactor(estar_, rstar_), delta_ - r.r);
     total += sum;
   }
   return total;
@@ -262,7 +262,7 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   const int chunks = static_cast<int>(records_.size());
   double* G = g.data();
   // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
-  const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(delta_ - r.r, estar_, rstar_) / r.r : 0.0; };
+  const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(hertz_prefactor(estar_, rstar_), delta_ - r.r) / r.r : 0.0; };
   // Record r with factor s: s d on its vertex, -w_k s d on each corner of its triangle; only
   // the entries of vertices in [lo, hi).
   const auto add_terms = [&](const Record& r, double s, Eigen::Index lo, Eigen::Index hi) {
@@ -335,7 +335,7 @@ std::vector<ShellContactTerm::Touch> VertexFaceContacts::touches(std::span<const
       const int* corner = faces_.data() + 3 * r.face;
       const double h = delta_ - r.r;
       out.push_back({r.i, {corner[0], corner[1], corner[2]}, Eigen::Vector3d(r.w[0], r.w[1], r.w[2]),
-                     Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(h, estar_, rstar_)});
+                     Eigen::Vector3d(r.d[0], r.d[1], r.d[2]), r.r, h, hertz_force(hertz_prefactor(estar_, rstar_), h)});
     }
   return out;
 }

@@ -9,7 +9,7 @@
 // Positions are a flat vector (x0, y0, z0, x1, ...): the memory of a row-major #N by 3
 // VertexMatrix. Particles may leave the box; the minimum image takes care of it.
 #include "core/minimum_image.hpp"
-#include "spheres/hertz.hpp"
+#include "forcefield/hertz.hpp"
 
 #include <Eigen/Core>
 

@@ -9,7 +9,7 @@
 // packing in ten orders at phi = 0.692 with 56 contacts), which the thesis's Fig. S5.1
 // (Z = 6 - 4/N) and Fig. S5.2 do not count as random jammed packings.
 #include "minimise/fire.hpp"
-#include "spheres/hertz.hpp"
+#include "forcefield/hertz.hpp"
 #include "spheres/sphere_packing.hpp"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #pragma once
 // Structure of sphere packings (thesis Ch. 4, Fig. 4.3): the radial
 // distribution function of centres, contact numbers, rattlers and contact forces.
-#include "spheres/hertz.hpp"
+#include "forcefield/hertz.hpp"
 #include "spheres/sphere_packing.hpp"
 
 #include <vector>

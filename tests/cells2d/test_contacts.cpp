@@ -1,10 +1,7 @@
-// The generic energy-gradient harness of lib/cells2d: every registered contact law, on random
-// overlapping configurations of budding cells, across the periodic boundary and under a
-// Lees-Edwards shear, gives forces and torques equal to minus the central-difference gradient
-// of the energy in (x, y, theta).
+// The geometry of budding cells and their contacts across the periodic boundary. (Forces and
+// torques against the energy, for every registered law: the force-field harness, tests/forcefield.)
 #include "cells2d/cell.hpp"
 #include "cells2d/contacts.hpp"
-#include "core/random.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,53 +10,6 @@
 
 using namespace cmp;
 using namespace cmp::cells2d;
-
-namespace {
-
-// n cells with random buds in a box of side L, packed densely enough to overlap; with
-// straddle, every cell sits within one sigma of a box edge so that contacts cross it.
-std::vector<Cell> random_cells(Random& rng, int n, double L, bool straddle) {
-  std::vector<Cell> cells(static_cast<std::size_t>(n));
-  for (Cell& c : cells) {
-    c.x = rng.uniform(0, L), c.y = rng.uniform(0, L);
-    if (straddle) {
-      c.x = rng.uniform() < 0.5 ? rng.uniform(-0.8, 0.8) : rng.uniform(0, L);
-      c.y = rng.uniform() < 0.5 ? rng.uniform(L - 0.8, L + 0.8) : c.y;
-    }
-    c.theta = rng.uniform(-4, 4);
-    c.bud = rng.uniform() < 0.15 ? 0.0 : rng.uniform(0, 1);
-  }
-  return cells;
-}
-
-double energy_of(ContactEngine& e, const std::vector<Cell>& cells) { return e.energy(cells); }
-
-// Largest |analytic - numerical| over every coordinate, relative to the largest force.
-double gradient_error(ContactEngine& engine, std::vector<Cell> cells, int* contacts) {
-  std::vector<double> f(3 * cells.size());
-  const double v = engine.evaluate(cells, f.data());
-  CHECK(v == Approx(energy_of(engine, cells)).epsilon(1e-12));
-  *contacts = 0;
-  engine.for_each_contact(cells, [&](const Contact&) { ++*contacts; });
-  const double h = 1e-6;
-  double worst = 0, scale = 0;
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      double* q = k == 0 ? &cells[i].x : (k == 1 ? &cells[i].y : &cells[i].theta);
-      const double q0 = *q;
-      *q = q0 + h;
-      const double up = energy_of(engine, cells);
-      *q = q0 - h;
-      const double down = energy_of(engine, cells);
-      *q = q0;
-      const double numeric = -(up - down) / (2 * h);
-      worst = std::max(worst, std::abs(numeric - f[3 * i + k]));
-      scale = std::max(scale, std::abs(f[3 * i + k]));
-    }
-  return worst / scale;
-}
-
-}  // namespace
 
 TEST_CASE("cells2d geometry: tangent lobes, centre of mass, the thesis's I/M") {
   Cell c;
@@ -79,25 +29,6 @@ TEST_CASE("cells2d geometry: tangent lobes, centre of mass, the thesis's I/M") {
   CHECK(back.y == Approx(2).epsilon(1e-14));
   CHECK(back.theta == Approx(0.3).epsilon(1e-14));
   CHECK(cell_area(bud_for_area(cell_area(0.37))) == Approx(cell_area(0.37)).epsilon(1e-15));
-}
-
-TEST_CASE("cells2d harness: every contact law's forces and torques are minus the energy gradient") {
-  for (const ContactLawStyle& law : contact_laws()) {
-    for (int config = 0; config < 3; ++config) {
-      DYNAMIC_SECTION(law.name << ", configuration " << config) {
-        Random rng(17, static_cast<std::uint64_t>(config));
-        Domain box;
-        box.lx = box.ly = 5;
-        if (config == 2) box.shear = 3e-4;  // Lees-Edwards images
-        ContactEngine engine(box, law);
-        const auto cells = random_cells(rng, 24, 5, config > 0);
-        int contacts = 0;
-        const double err = gradient_error(engine, cells, &contacts);
-        CHECK(contacts > 10);
-        CHECK(err < 1e-6);
-      }
-    }
-  }
 }
 
 TEST_CASE("cells2d harness: contacts across the periodic boundary are found and counted once") {

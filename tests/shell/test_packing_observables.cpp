@@ -67,7 +67,7 @@ TEST_CASE("shell contacts: two spheres pressed together push along their centre 
         const double r = d.norm();
         if (r >= 2 * cp.vertex_radius) continue;
         ++pairs;
-        expected += hertz_force(2 * cp.vertex_radius - r, cp.vertex_effective_modulus(), 0.5 * cp.vertex_radius) / r * d;
+        expected += cmp::hertz_force(cmp::hertz_prefactor(cp.vertex_effective_modulus(), 0.5 * cp.vertex_radius), 2 * cp.vertex_radius - r) / r * d;
       }
     CHECK(c01.vertex_pairs == pairs);
     CHECK(pairs >= 1);
@@ -104,7 +104,7 @@ TEST_CASE("shell contacts: Eq. S4.5 on two icosahedra tip to tip, normal part |F
   const auto contacts = shell_contacts(p.V, p.F, p.offsets, box_of(10.0, false), cp);
   REQUIRE(contacts.size() == 2);
   CHECK(contacts[0].vertex_pairs == 1);
-  const double f = hertz_force(overlap, cp.vertex_effective_modulus(), 0.5 * cp.vertex_radius);
+  const double f = cmp::hertz_force(cmp::hertz_prefactor(cp.vertex_effective_modulus(), 0.5 * cp.vertex_radius), overlap);
   const double cosine = std::sqrt((5 + 2 * std::sqrt(5.0)) / 15);
   CHECK((contacts[0].force - Eigen::Vector3d(-f, 0, 0)).norm() <= 1e-12 * f);
   CHECK((contacts[0].normal - Eigen::Vector3d(-f * cosine, 0, 0)).norm() <= 1e-12 * f);

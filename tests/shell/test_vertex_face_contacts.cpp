@@ -2,7 +2,7 @@
 // region, the force of one vertex on one triangle (direction, magnitude, Newton's third law),
 // the barrier over a whole coarse shell against vertex spheres of the same reach, periodic
 // images, and the same bits on 1 and 2 threads. Gradients and invariances: the generic harness
-// (test_styles_gradient.cpp).
+// (tests/forcefield).
 #include "shell/hertz_contacts.hpp"
 #include "shell/vertex_face_contacts.hpp"
 #include "shell/element_assembly.hpp"

@@ -1,12 +1,14 @@
-#include "spheres/hertz.hpp"
+#include "forcefield/hertz.hpp"
 
 #include "core/errors.hpp"
 
-namespace cmp::spheres {
+#include <cmath>
+
+namespace cmp {
 
 void HertzMaterial::validate() const {
   if (!(youngs_modulus > 0) || !std::isfinite(youngs_modulus)) throw UsageError("Young's modulus must be positive");
   if (!(poisson_ratio > -1 && poisson_ratio < 1)) throw UsageError("Poisson's ratio must lie in (-1, 1)");
 }
 
-}  // namespace cmp::spheres
+}  // namespace cmp

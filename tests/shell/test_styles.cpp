@@ -1,6 +1,6 @@
-// The generic harness: every registered style of every table (lib/shell/styles.hpp) on random
-// perturbed icosahedral meshes. Adding a style to a table adds it here with no new test code.
-//   - add_gradient against a central finite difference of energy
+// What every registered shell style (lib/shell/styles.hpp) owes beyond its gradient (which the
+// force-field harness, tests/forcefield, checks for every style of every kind), on random
+// perturbed icosahedral meshes; adding a style to a table adds it here with no new test code:
 //   - energy invariant under rigid translations and rotations (contacts: those that keep the
 //     walls, on two overlapping shells)
 //   - stretching and bending: zero energy and zero gradient on the rest mesh
@@ -68,24 +68,6 @@ std::vector<double> deformed(const cmp::mesh::TriMesh& rest, unsigned seed) {
   return x;
 }
 
-// max_i |fd_i - g_i| / max_i |g_i|, with central differences of step h.
-double gradient_error(const EnergyTerm& term, std::vector<double> x, double h) {
-  std::vector<double> g(x.size(), 0.0);
-  term.add_gradient(x, g);
-  double worst = 0, scale = 0;
-  for (double v : g) scale = std::max(scale, std::abs(v));
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double x0 = x[i];
-    x[i] = x0 + h;
-    const double ep = term.energy(x);
-    x[i] = x0 - h;
-    const double em = term.energy(x);
-    x[i] = x0;
-    worst = std::max(worst, std::abs((ep - em) / (2 * h) - g[i]));
-  }
-  return worst / scale;
-}
-
 template <class Table, class Parameters>
 void check_table(Table table, const Parameters& params, bool zero_at_rest,
                  cmp::mesh::TriMesh (*make_rest)(unsigned) = &one_shell, bool keeps_walls = false) {
@@ -101,21 +83,8 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest,
       const double e = term->energy(x);
       CHECK(std::isfinite(e));
       CHECK(e != 0.0);
-      CHECK(gradient_error(*term, x, 1e-6) < 1e-7);  // measured: <= 1.3e-8 (turgor), <= 7e-10 (the rest)
-
-      // A state or gradient of the wrong size is refused.
-      std::vector<double> short_x(x.begin(), x.end() - 3), g_ok(x.size(), 0.0), g_short(x.size() - 1, 0.0);
-      CHECK_THROWS_AS(term->energy(short_x), std::invalid_argument);
-      CHECK_THROWS_AS(term->add_gradient(short_x, g_ok), std::invalid_argument);
-      CHECK_THROWS_AS(term->add_gradient(x, g_short), std::invalid_argument);
-      CHECK_THROWS_AS(term->add_gradient(x, std::span<double>()), std::invalid_argument);
-
-      // add_gradient adds: twice gives twice.
-      std::vector<double> g1(x.size(), 0.0), g2(x.size(), 0.0);
+      std::vector<double> g1(x.size(), 0.0);
       term->add_gradient(x, g1);
-      term->add_gradient(x, g2);
-      term->add_gradient(x, g2);
-      for (std::size_t i = 0; i < x.size(); ++i) REQUIRE(g2[i] == Approx(2 * g1[i]).margin(1e-14));
 
       // Contacts with walls at fixed z are invariant under the motions that keep the walls:
       // rotations about z and translations in the xy plane.
@@ -142,19 +111,19 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest,
 
 }  // namespace
 
-TEST_CASE("every stretching style passes the gradient and invariance checks", "[shell][styles]") {
+TEST_CASE("every stretching style is invariant under rigid motions", "[shell][styles]") {
   check_table(stretching_styles(), kMaterial, true);
 }
 
-TEST_CASE("every bending style passes the gradient and invariance checks", "[shell][styles]") {
+TEST_CASE("every bending style is invariant under rigid motions", "[shell][styles]") {
   check_table(bending_styles(), kMaterial, true);
 }
 
-TEST_CASE("every pressure style passes the gradient and invariance checks", "[shell][styles]") {
+TEST_CASE("every pressure style is invariant under rigid motions", "[shell][styles]") {
   check_table(pressure_styles(), kPressure, false);
 }
 
-TEST_CASE("every contact style passes the gradient and invariance checks", "[shell][styles]") {
+TEST_CASE("every contact style is invariant under rigid motions", "[shell][styles]") {
   check_table(contact_styles(), contact_parameters(), false, &two_shells, true);
 }
 
@@ -274,7 +243,7 @@ TEST_CASE("hertz-faces: the Verlet list kept over small moves finds what a fresh
   }
 }
 
-TEST_CASE("hertz-vertices and hertz-faces in a periodic box: forces match the energy, and a shell may sit in any image",
+TEST_CASE("hertz-vertices and hertz-faces in a periodic box: a shell may sit in any image (forces: tests/forcefield)",
           "[shell][styles]") {
   // Two overlapping shells (as above) in a periodic box of side 6 along every axis, placed so
   // that the contact region straddles the x = 0 face: the pairs are found only through the
@@ -297,7 +266,6 @@ TEST_CASE("hertz-vertices and hertz-faces in a periodic box: forces match the en
     const double e = free->energy(x);
     REQUIRE(e > 0);
     CHECK(periodic->energy(x) == Approx(e).epsilon(1e-13));
-    CHECK(gradient_error(*periodic, x, 1e-6) < 1e-7);
     // Shift the second shell by box vectors: the open-space energy drops to zero, the periodic
     // one stays (the same pairs, the same distances up to round-off of the shift).
     const long half = rest.V.rows() / 2;
@@ -309,7 +277,6 @@ TEST_CASE("hertz-vertices and hertz-faces in a periodic box: forces match the en
     }
     CHECK(free->energy(y) == 0.0);
     CHECK(periodic->energy(y) == Approx(e).epsilon(1e-11));
-    CHECK(gradient_error(*periodic, y, 1e-6) < 1e-7);
     // A periodic side under 4 R_v (4 delta) is refused.
     CHECK_THROWS_AS(set_box_of(*periodic, Eigen::Vector3d(L, 0.5, L), {true, true, true}), cmp::UsageError);
     set_box_of(*periodic, Eigen::Vector3d(L, 0.5, L), {true, false, true});
