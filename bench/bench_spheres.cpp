@@ -81,11 +81,11 @@ int main(int argc, char** argv) {
     if (argc > 7) {  // Hertz energy and force on a fine table, r from 1e-4 d to d
       std::FILE* f = std::fopen(argv[7], "w");
       const int points = 100000;
-      const double d = 2 * radius, c = spheres::hertz_prefactor({}, radius, radius);
+      const double d = 2 * radius, c = cmp::hertz_prefactor({}, radius, radius);
       fmt::print(f, "# Hertz, E = 1, nu = 0.5, d = {:.17g}\n\nHERTZ\nN {} R {:.17g} {:.17g}\n\n", d, points, 1e-4 * d, d);
       for (int k = 0; k < points; ++k) {
         const double r = 1e-4 * d + (d - 1e-4 * d) * k / (points - 1), h = d - r;
-        fmt::print(f, "{} {:.17g} {:.17g} {:.17g}\n", k + 1, r, spheres::hertz_energy(c, h), spheres::hertz_force(c, h));
+        fmt::print(f, "{} {:.17g} {:.17g} {:.17g}\n", k + 1, r, cmp::hertz_energy(c, h), cmp::hertz_force(c, h));
       }
       std::fclose(f);
     }
