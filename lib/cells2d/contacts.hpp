@@ -11,6 +11,7 @@
 // colonies in parallel instead.
 #include "cells2d/cell.hpp"
 #include "cells2d/contact_law.hpp"
+#include "core/minimum_image.hpp"
 #include "neighbours/neighbour_list.hpp"
 
 #include <Eigen/Core>
@@ -35,7 +36,7 @@ struct Domain {
       const double ny = std::nearbyint(d[1] / ly);
       d[1] -= ny * ly;
       d[0] -= ny * shear * ly;
-      d[0] -= std::nearbyint(d[0] / lx) * lx;
+      d[0] = minimum_image(d[0], lx);
     }
     return d;
   }

@@ -1,4 +1,5 @@
 #include "cells2d/packing_xyz.hpp"
+#include "core/minimum_image.hpp"
 
 #include "core/errors.hpp"
 #include "io/xyz.hpp"
@@ -12,14 +13,9 @@ namespace cmp::cells2d {
 
 namespace {
 
-double wrap(double x, double L) {
-  double w = x - L * std::floor(x / L);
-  return w >= L ? 0.0 : w;
-}
-
 Cell wrapped(const Cell& c, double L) {
   Cell w = c;
-  w.x = wrap(c.x, L), w.y = wrap(c.y, L);
+  w.x = wrap_into_period(c.x, L), w.y = wrap_into_period(c.y, L);
   return w;
 }
 
@@ -136,7 +132,7 @@ CellPacking packing_from_frame(const io::XyzFrame& frame) {
     const Eigen::Vector2d m(pos(s.mother, 0), pos(s.mother, 1));
     const Cell c = cell_from_lobe_rows(m, Eigen::Vector2d(pos(s.bud, 0), pos(s.bud, 1)), bud, p.box);
     Eigen::Vector2d d = m - Eigen::Vector2d(pos(s.bud, 0), pos(s.bud, 1));
-    for (int a = 0; a < 2; ++a) d[a] -= p.box * std::nearbyint(d[a] / p.box);
+    for (int a = 0; a < 2; ++a) d[a] = minimum_image(d[a], p.box);
     if (std::abs(d.norm() - 0.5 * (1 + bud)) > 1e-6)
       fail(row_line(s.bud), fmt::format("the bud of cell {} is {} from its mother's centre; tangent lobes are {} apart",
                                         id, d.norm(), 0.5 * (1 + bud)));

@@ -76,7 +76,7 @@ long first_duplicate(const mesh::VertexMatrix& x, const Eigen::VectorXd& r,
     Key k{};
     for (int a = 0; a < 3; ++a) {
       double w = x(i, a);
-      if (pbc[a]) w -= box[a] * std::floor(w / box[a]);
+      if (pbc[a]) w = wrap_into_period(w, box[a]);
       auto c = static_cast<std::int64_t>(std::floor(w / cell[a]));
       if (pbc[a]) c = std::clamp<std::int64_t>(c, 0, cells[a] - 1);
       k.c[a] = c;

@@ -1,4 +1,5 @@
 #include "packrun/analyze_batch.hpp"
+#include "core/minimum_image.hpp"
 
 #include "core/parallel_for.hpp"
 #include "io/atomic_output.hpp"
@@ -116,7 +117,7 @@ void write_analysis_shells(std::ostream& out, const std::vector<PackingAnalysis>
     for (std::size_t k = 0; k < a.shapes.size(); ++k) {
       const auto& s = a.shapes[k];
       Eigen::Vector3d c = s.centre;  // wrapped into the box for display
-      for (int d = 0; d < 3; ++d) c[d] -= a.box[d] * std::floor(c[d] / a.box[d]);
+      for (int d = 0; d < 3; ++d) c[d] = wrap_into_period(c[d], a.box[d]);
       csv.row({a.file, std::to_string(k), format_number(c[0]), format_number(c[1]), format_number(c[2]),
                a.has_contacts ? std::to_string(a.contacts_per_shell[k]) : "", format_number(a.volumes[k]),
                a.turgor.empty() ? "" : format_number(a.turgor[k]), format_number(s.gyration[0]),

@@ -22,9 +22,7 @@ spheres::SpherePacking centres_as_spheres(const PackingAnalysis& a) {
   s.positions.resize(static_cast<Eigen::Index>(a.shapes.size()), 3);
   for (std::size_t k = 0; k < a.shapes.size(); ++k)
     for (int d = 0; d < 3; ++d) {
-      double x = a.shapes[k].centre[d] - a.box[d] * std::floor(a.shapes[k].centre[d] / a.box[d]);
-      if (x >= a.box[d]) x = 0;
-      s.positions(static_cast<Eigen::Index>(k), d) = x;
+      s.positions(static_cast<Eigen::Index>(k), d) = wrap_into_period(a.shapes[k].centre[d], a.box[d]);
     }
   s.radii = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(a.shapes.size()), 0.5 * a.d0);
   return s;

@@ -2,6 +2,7 @@
 // namespace; CGAL needs only GMP's C interface (as in spheremesh/spherical_delaunay.cpp).
 #undef CGAL_USE_GMPXX
 #include "shell/voronoi_faces.hpp"
+#include "core/minimum_image.hpp"
 
 #include "core/errors.hpp"
 
@@ -22,11 +23,6 @@ using Traits = CGAL::Periodic_3_Delaunay_triangulation_traits_3<Kernel>;
 using Triangulation = CGAL::Periodic_3_Delaunay_triangulation_3<Traits>;
 using Point = Triangulation::Point;
 
-double wrap(double x, double side) {
-  double w = x - side * std::floor(x / side);
-  if (w >= side || w < 0) w = 0;  // x just below a multiple of side
-  return w;
-}
 
 // Area of the planar polygon p (vertices in order around it).
 double polygon_area(const std::vector<Point>& p) {
@@ -48,7 +44,7 @@ std::vector<int> periodic_voronoi_face_counts(const mesh::VertexMatrix& P, doubl
   Triangulation T(Triangulation::Iso_cuboid(0, 0, 0, side, side, side));
   std::map<std::tuple<double, double, double>, Eigen::Index> index;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const Point p(wrap(P(i, 0), side), wrap(P(i, 1), side), wrap(P(i, 2), side));
+    const Point p(wrap_into_period(P(i, 0), side), wrap_into_period(P(i, 1), side), wrap_into_period(P(i, 2), side));
     if (!index.emplace(std::make_tuple(p.x(), p.y(), p.z()), i).second)
       throw UsageError("periodic Voronoi cells: points " + std::to_string(index[{p.x(), p.y(), p.z()}]) + " and " +
                        std::to_string(i) + " are at the same place");
