@@ -1,6 +1,7 @@
 #include "cells2d/tables.hpp"
 
 #include "cells2d/packing_xyz.hpp"
+#include "cli/value_list.hpp"
 #include "core/errors.hpp"
 #include "io/csv.hpp"
 #include "io/parse_number.hpp"
@@ -57,21 +58,7 @@ std::vector<std::string> packing_row(const Moduli& m, double box) {
 }
 
 std::vector<double> parse_dphi_list(const std::string& text) {
-  std::vector<double> out;
-  const auto colon = split(text, ':');
-  if (colon.size() == 3) {
-    const double first = parse_value(colon[0], text), last = parse_value(colon[1], text),
-                 step = parse_value(colon[2], text);
-    if (!(step > 0)) throw UsageError("the step of '" + text + "' must be positive");
-    if (last < first) throw UsageError("'" + text + "': LAST is below FIRST");
-    const long n = std::lround(std::floor((last - first) / step + 1e-9));
-    if (n > 100000) throw UsageError("'" + text + "' names more than 100000 values");
-    for (long k = 0; k <= n; ++k) out.push_back(first + static_cast<double>(k) * step);
-  } else if (colon.size() == 1) {
-    for (const auto& t : split(text, ',')) out.push_back(parse_value(t, text));
-  } else {
-    throw UsageError("'" + text + "' is neither FIRST:LAST:STEP nor a comma list");
-  }
+  std::vector<double> out = cli::parse_value_list(text);
   for (double v : out)
     if (v < 0) throw UsageError("'" + text + "': dphi must not be negative");
   std::sort(out.begin(), out.end());

@@ -5,6 +5,8 @@
 #include "mesh/dual_areas.hpp"
 
 #include "cli/progress.hpp"
+#include "cli/seed_range.hpp"
+#include "cli/value_list.hpp"
 #include "core/errors.hpp"
 #include "core/fnv1a.hpp"
 #include "forcefield/hertz.hpp"
@@ -39,18 +41,6 @@ double round12(double v) {
   return out;
 }
 
-double parse_one(const std::string& text) {
-  double v = 0;
-  if (!io::try_parse_double(text, v) || !std::isfinite(v)) throw UsageError("'" + text + "' is not a number");
-  return v;
-}
-
-std::string replace_phi(const std::string& pattern, const std::string& phi) {
-  std::string out = pattern;
-  for (std::size_t at; (at = out.find("{phi}")) != std::string::npos;) out.replace(at, 5, phi);
-  return out;
-}
-
 std::string join(const std::vector<double>& v) {
   std::string s;
   for (double x : v) s += (s.empty() ? "" : " ") + io::format_number(x);
@@ -68,23 +58,8 @@ std::vector<std::string> split_cells(const std::string& line) {
 }  // namespace
 
 std::vector<double> parse_phi_targets(const std::string& text) {
-  std::vector<double> out;
-  if (text.find(':') != std::string::npos) {
-    std::vector<double> p;
-    std::string part;
-    std::istringstream in(text);
-    while (std::getline(in, part, ':')) p.push_back(parse_one(part));
-    if (p.size() != 3) throw UsageError("expected START:STOP:STEP or a comma-separated list, got '" + text + "'");
-    if (!(p[2] > 0)) throw UsageError("the step of '" + text + "' must be positive");
-    if (!(p[1] >= p[0])) throw UsageError("STOP must not be below START in '" + text + "'");
-    const long n = static_cast<long>(std::floor((p[1] - p[0]) / p[2] + 1e-9));
-    if (n > 100000) throw UsageError("'" + text + "' names more than 100000 targets");
-    for (long k = 0; k <= n; ++k) out.push_back(round12(p[0] + static_cast<double>(k) * p[2]));
-  } else {
-    std::string part;
-    std::istringstream in(text);
-    while (std::getline(in, part, ',')) out.push_back(round12(parse_one(part)));
-  }
+  std::vector<double> out = cli::parse_value_list(text);
+  for (double& v : out) v = round12(v);
   if (out.empty()) throw UsageError("no target given");
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (!(out[k] > 0) || out[k] > 1)
@@ -349,7 +324,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
       comments.push_back("contact_distance=" + io::format_number(m.contact.contact_distance));
     if (o.walls) comments.push_back("walls=" + wall_name);
     mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
-    io::write_off(replace_phi(job.output_pattern, io::format_number(phi)), V, s.rest().F, comments, &info);
+    io::write_off(cli::expand_pattern(job.output_pattern, "phi", io::format_number(phi)), V, s.rest().F, comments, &info);
   };
 
   auto last_checkpoint = clock::now();
