@@ -119,10 +119,10 @@ STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUIL
 study-tools: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS) >&2
 study: study-tools
-	@$(STUDY_MAKE) all
+	+@$(STUDY_MAKE) all
 # The report from whatever has finished (tables, fits, figures; the rest says what is missing).
 study-report: study-tools
-	@$(STUDY_MAKE) report
+	+@$(STUDY_MAKE) report
 # One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel
 # or a Slurm job array; run the stages in that order, each after the one before has finished.
 # (Standard output holds the commands only: the build above reports on standard error.)

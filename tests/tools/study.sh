@@ -5,7 +5,7 @@
 # jobs printed for GNU parallel, and a report that refuses results of another version.
 #   bash study.sh --list | CASE     (needs CMP_BIN, CMP_SRC)
 set -uo pipefail
-cases="handoffs kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused missing_tools_named"
+cases="handoffs parallel_through_top_makefile kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused missing_tools_named"
 if [[ ${1:-} == --list ]]; then printf '%s\n' $cases; exit 0; fi
 case=${1:?CASE}
 bin=${CMP_BIN:?set CMP_BIN}
@@ -69,6 +69,15 @@ sig = meta(f"{d}/fits/hydraulic_radius.csv")
 assert int(sig["n"]) == len(perc_flow), (sig["n"], len(perc_flow))
 print(f"{checked} percolate rows, {len(flow)} flows checked")
 PY
+}
+
+# `make study -j2` hands its job slots down to the campaign's sub-makes (a recipe that calls make
+# through a variable needs the '+' prefix, or the campaign silently runs one task at a time).
+case_parallel_through_top_makefile() {
+  make -C "$src" --no-print-directory -j2 -o study-tools study STUDY=tiny STUDY_DIR="$tmp/st" \
+    BUILD="$(dirname "$bin")" THREADS=1 >"$tmp/log" 2>&1 || fail "make study: $(tail -20 "$tmp/log")"
+  ! grep -i 'jobserver unavailable' "$tmp/log" || fail "the campaign ran without the job server"
+  [ -s "$tmp/st/report.html" ] || fail "no report"
 }
 
 case_kill_and_resume() {
