@@ -20,7 +20,7 @@ all: configure
 
 # Installs the Debian packages the project needs; a no-op when all are present.
 deps:
-	@scripts/install_debian_packages.sh deps $(DEB_PACKAGES)
+	@scripts/ci/install_debian_packages.sh deps $(DEB_PACKAGES)
 
 configure: $(BUILD)/CMakeCache.txt
 $(BUILD)/CMakeCache.txt:
@@ -32,7 +32,7 @@ $(BUILD)/CMakeCache.txt:
 EXAMPLES ?= small
 export EXAMPLES
 test: deps all
-	@scripts/run_tests.sh $(BUILD)
+	@scripts/ci/run_tests.sh $(BUILD)
 
 # The same tests under AddressSanitizer and UBSan (slower; not part of CI).
 test-asan: deps
@@ -49,7 +49,7 @@ FUZZ_READERS := off xyz csv vtk packing
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 .PHONY: fuzz
 fuzz:
-	@scripts/install_debian_packages.sh fuzz $(FUZZ_PACKAGES)
+	@scripts/ci/install_debian_packages.sh fuzz $(FUZZ_PACKAGES)
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMP_FUZZ=ON -DBUILD_TESTING=OFF $(FUZZ_CMAKE_FLAGS)
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_READERS))
@@ -67,7 +67,7 @@ fuzz:
 # Performance figures for the README's benchmark table (written to $(OUT)/bench/).
 # Installs Palabos first and configures again, so that CMake finds it (bench_palabos).
 bench: deps
-	@scripts/install_debian_packages.sh bench $(BENCH_PACKAGES)
+	@scripts/ci/install_debian_packages.sh bench $(BENCH_PACKAGES)
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks

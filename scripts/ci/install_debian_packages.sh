@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages given that are missing (a no-op when all are present), as root
 # or through sudo. Used by make deps, make bench and make fuzz.
-#   scripts/install_debian_packages.sh TARGET PACKAGE...
+#   scripts/ci/install_debian_packages.sh TARGET PACKAGE...
 set -euo pipefail
 target=$1; shift
 missing=()
