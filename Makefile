@@ -71,7 +71,7 @@ bench: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
-	@scripts/bench.sh $(BUILD) $(OUT)/bench
+	@scripts/bench/run.sh $(BUILD) $(OUT)/bench
 
 # Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
 tables: deps all

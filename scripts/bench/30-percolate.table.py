@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for percolate (scripts/bench_percolate.sh)."""
+"""Rows of the README benchmark table for percolate (scripts/bench/30-percolate.sh)."""
 
 
 def _label(r):

@@ -1,6 +1,6 @@
 """Rows of the README benchmark table for rndmesh and the neighbour machinery."""
 
-# One row formatter per CSV file of scripts/bench_rndmesh.sh.
+# One row formatter per CSV file of scripts/bench/10-rndmesh.sh.
 SECTIONS = {
     "rndmesh_anneal.csv": lambda r: (
         "rndmesh random: annealing, 200 x 100 sweeps, 1 core", f"N = {r['N']}",

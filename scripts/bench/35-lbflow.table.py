@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for lbflow's kernel (scripts/bench_lbflow.sh)."""
+"""Rows of the README benchmark table for lbflow's kernel (scripts/bench/35-lbflow.sh)."""
 
 
 def _fractions(r):

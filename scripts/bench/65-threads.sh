@@ -2,7 +2,7 @@
 # make bench, threads under load: every parallel path on 1 thread, on 2 threads, and on 2
 # threads while another process keeps one core busy (`sh -c 'while :; do :; done'`), as
 # happens under make -j or on a shared node. The loaded two-thread run should stay within
-# about 20 % of the quiet one-thread run. Sourced by scripts/bench.sh ($build, $bench, $out,
+# about 20 % of the quiet one-thread run. Sourced by scripts/bench/run.sh ($build, $bench, $out,
 # $machine, $stamp); the best of BENCH_REPEAT runs (default 2) of each case is kept.
 echo "== threads under load: 1 thread, 2 threads, 2 threads with another process busy on one core" >&2
 work=$(mktemp -d)

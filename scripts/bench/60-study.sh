@@ -2,7 +2,7 @@
 # make bench, study: the wall time of each stage of the study's campaign (make study) at the demo
 # size (STUDY=demo, make -j2, one thread a task), run from scratch into $out/study, per stage:
 # tasks, total, mean and longest task. BENCH_STUDY=default measures the default campaign instead
-# (about an hour). Sourced by scripts/bench.sh ($build, $out, $machine, $stamp).
+# (about an hour). Sourced by scripts/bench/run.sh ($build, $out, $machine, $stamp).
 preset=${BENCH_STUDY:-demo}
 echo "== make study STUDY=$preset: wall time per stage" >&2
 rm -rf "$out/study"

@@ -3,11 +3,11 @@
 # in the same run (bench/bench_palabos): the dense and porous 128^3 boxes of bench_lbm speed
 # (same lattice, same 20 steps, same fluid nodes; MLUPS over fluid nodes) on 1 MPI process
 # (MRT) and 2 (MRT, BGK, TRT; the Debian library is built with MPI: one process per core), the
-# N = 50, delta = 0.04 cluster of bench_lbflow_run.sh at M = 1 (20 steps) and M = 3 (10 steps)
+# N = 50, delta = 0.04 cluster of 40-lbflow_run.sh at M = 1 (20 steps) and M = 3 (10 steps)
 # through both codes, and a square-duct permeability from both (the same physics?). Skipped
 # when CMake found no Palabos or MPI. bench_palabos is not part of `make all` (a minute of
 # Palabos templates): it is built here. PAL_N (128) sets the box side for a quick try. Sourced
-# by scripts/bench.sh ($build, $bench, $out, $machine, $stamp).
+# by scripts/bench/run.sh ($build, $bench, $out, $machine, $stamp).
 if ! grep -q '^CMP_HAVE_PALABOS:INTERNAL=ON' "$build/CMakeCache.txt"; then
   echo "== Palabos: libplb-dev or MPI not found by CMake; skipped" >&2
 else

@@ -6,7 +6,7 @@
 # link table, 340), with the even and odd AA steps
 # alone; MRT (the default) and TRT, double and float storage; and the
 # simple cubic sphere array against Zick & Homsy's drag at n = 16, 24, 32 nodes per cell,
-# half-way and interpolated walls. Sourced by scripts/bench.sh ($bench, $out, $machine, $stamp).
+# half-way and interpolated walls. Sourced by scripts/bench/run.sh ($bench, $out, $machine, $stamp).
 echo "== lbflow kernel: D3Q19 MLUPS beside a triad; sphere array against Zick & Homsy" >&2
 {
   echo "# machine=$machine"

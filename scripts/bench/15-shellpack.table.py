@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for shellpack (scripts/bench_shellpack.sh)."""
+"""Rows of the README benchmark table for shellpack (scripts/bench/15-shellpack.sh)."""
 
 SECTIONS = {
     "shellpack_jam.csv": lambda r: (

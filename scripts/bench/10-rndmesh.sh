@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make bench, rndmesh and the neighbour machinery. Sourced by scripts/bench.sh, which sets
+# make bench, rndmesh and the neighbour machinery. Sourced by scripts/bench/run.sh, which sets
 # $bench (the benchmark programs), $out, $machine and $stamp.
 echo "== rndmesh: Monte Carlo annealing, thesis schedule (200 anneals x 100 sweeps), one core" >&2
 {

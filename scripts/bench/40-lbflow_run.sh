@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # make bench, lbflow as a user runs it (the kernel's MLUPS and the bandwidth bound are
-# bench_lbflow.sh's): a thesis-sized cluster (N = 50 jammed spheres, delta = 0.04, as jammed)
+# 35-lbflow.sh's): a thesis-sized cluster (N = 50 jammed spheres, delta = 0.04, as jammed)
 # through the whole program at M = 1 to convergence on 1 and 2 threads, and at M = 3 (the
 # thesis's ~10^7 nodes) for LBFLOW_M3_STEPS (400) steps: speed, memory per fluid node and peak
 # memory; the time to convergence at M = 3 is estimated from the M = 1 steps times 1.4 (what
 # the M = 3 runs of make flow-figure took over M = 1). Each row has the bandwidth bounds of a
 # triad measured just before it on as many threads (bench_lbm triad: 304 bytes per update, and
 # 340 with the link table's), as the kernel rows do.
-# Sourced by scripts/bench.sh ($build, $bench, $out, $machine, $stamp).
+# Sourced by scripts/bench/run.sh ($build, $bench, $out, $machine, $stamp).
 echo "== lbflow: N = 50 jammed spheres, delta = 0.04: M = 1 to convergence, M = 3 for ${LBFLOW_M3_STEPS:-400} steps" >&2
 lb_dir=$(mktemp -d)
 "$build/bin/shellpack" jam -N 50 --seed 1 -q -o "$lb_dir/jam.xyz" --csv /dev/null

@@ -1,13 +1,13 @@
-"""Rows of the README benchmark table for Palabos beside lbflow's kernel (scripts/bench_palabos.sh).
+"""Rows of the README benchmark table for Palabos beside lbflow's kernel (scripts/bench/45-palabos.sh).
 
 Each Palabos speed row names lbflow's figure for the same case and core count from the same
-make bench run (lbflow_kernel.csv of scripts/bench_lbflow.sh, palabos_lbflow_cluster.csv)
+make bench run (lbflow_kernel.csv of scripts/bench/35-lbflow.sh, palabos_lbflow_cluster.csv)
 and the ratio."""
 import csv
 import sys
 from pathlib import Path
 
-_OUT = Path(sys.argv[1])  # scripts/bench_table.py's output folder: the CSV files of this run
+_OUT = Path(sys.argv[1])  # scripts/bench/table.py's output folder: the CSV files of this run
 
 
 def _rows(name):

@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for shellpack compress (scripts/bench_compress.sh)."""
+"""Rows of the README benchmark table for shellpack compress (scripts/bench/25-compress.sh)."""
 
 SECTIONS = {
     "compress_steps.csv": lambda r: (

@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for lbflow as a program (scripts/bench_lbflow_run.sh)."""
+"""Rows of the README benchmark table for lbflow as a program (scripts/bench/40-lbflow_run.sh)."""
 
 _m1_steps = {}
 

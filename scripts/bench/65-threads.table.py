@@ -1,4 +1,4 @@
-"""Rows of the README's benchmark table from scripts/bench_threads.sh: each parallel path on
+"""Rows of the README's benchmark table from scripts/bench/65-threads.sh: each parallel path on
 1 and 2 threads and on 2 threads with another process busy on one core."""
 
 

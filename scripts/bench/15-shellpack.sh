@@ -2,7 +2,7 @@
 # make bench, shellpack: time per jammed packing (the thesis's full protocol) and one FIRE
 # minimisation side by side with LAMMPS (Debian `lammps`: min_style fire, Hertz through
 # pair_style table, the same start and the same per-particle force tolerance). Sourced by
-# scripts/bench.sh ($bench, $out, $machine, $stamp). LAMMPS is installed from Debian when
+# scripts/bench/run.sh ($bench, $out, $machine, $stamp). LAMMPS is installed from Debian when
 # missing unless BENCH_INSTALL_REFERENCES=0.
 echo "== shellpack jam as a user runs it: time per jammed packing, 1 thread" >&2
 # The command a user types, with its defaults (rattler-free isostatic packings, tolerance

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make bench, percolate: connected-component labelling (ours vs scipy.ndimage.label on the very
 # same images, in the same run) and voxelisation of a shell packing. Sourced by
-# scripts/bench.sh, which sets $bench, $out, $machine and $stamp.
+# scripts/bench/run.sh, which sets $bench, $out, $machine and $stamp.
 echo "== percolate: labelling of N^3 images, ours (1 and 2 threads) vs scipy.ndimage.label (1 core)" >&2
 img_dir=$(mktemp -d)
 {

@@ -3,7 +3,7 @@
 # criterion 1e-16 <= V/(kN) <= 2e-16, one colony at a time on one thread: wall time and FIRE
 # iterations at boxes 8 (the thesis's own Fortran code: 48 cells, 60 s on one core), 10, 15
 # and 20 sigma; then the time per packing of a sweep (jamming + dphi = 0.05 at 15 sigma) on
-# 2 threads, with the thesis's step reset and with --double-step. Sourced by scripts/bench.sh, which sets $bench, $out, $machine and $stamp.
+# 2 threads, with the thesis's step reset and with --double-step. Sourced by scripts/bench/run.sh, which sets $bench, $out, $machine and $stamp.
 echo "== jam2d: jamming at L = 8, 10, 15, 20 sigma (1 thread)" >&2
 {
   echo "# machine=$machine"

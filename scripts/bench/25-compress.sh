@@ -4,7 +4,7 @@
 # box step and FIRE iterations per second over the first steps after jamming (step 0, the
 # inflation, left out), 16 x 642 on 1 and 2 threads and 50 x 2562 on 2 (BENCH_COMPRESS_LARGE=0
 # skips it); then the wall time of a whole compression to phi = 0.95 (16 x 642, hertz-faces).
-# Sourced by scripts/bench.sh ($build, $out, $machine, $stamp).
+# Sourced by scripts/bench/run.sh ($build, $out, $machine, $stamp).
 echo "== shellpack compress: time per box step and FIRE iterations per second" >&2
 cmp_work=$(mktemp -d)
 compress_row() {  # compress_row N LEVEL STEPS THREADS

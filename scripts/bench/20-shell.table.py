@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for shell mechanics (scripts/bench_shell.sh: name, value, unit per thread count)."""
+"""Rows of the README benchmark table for shell mechanics (scripts/bench/20-shell.sh: name, value, unit per thread count)."""
 
 
 def _row(r):

@@ -1,4 +1,4 @@
-"""Rows of the README benchmark table for jam2d (scripts/bench_jam2d.sh)."""
+"""Rows of the README benchmark table for jam2d (scripts/bench/55-jam2d.sh)."""
 
 
 def _jamming(r):

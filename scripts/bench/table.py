@@ -1,4 +1,4 @@
-"""Turns the CSV files of scripts/bench.sh into the Markdown table of the README."""
+"""Turns the CSV files of scripts/bench/run.sh into the Markdown table of the README."""
 import csv
 import importlib.util
 import sys
@@ -14,13 +14,12 @@ out, machine, stamp = Path(sys.argv[1]), sys.argv[2], sys.argv[3]
 print(f"Measured by `make bench` on {machine}, {stamp}.\n")
 print("| work | size | figure | reference |")
 print("|---|---|---|---|")
-# Each tool's rows come from scripts/bench_table_<tool>.py, a SECTIONS map from a CSV file
-# of its bench script to a row formatter; files that are absent are skipped.
+# Each tool's rows come from NN-<tool>.table.py of this folder, in the order of NN (that of
+# the benchmarks, NN-<tool>.sh): a SECTIONS map from a CSV file of its benchmark to a row
+# formatter; files that are absent are skipped.
 here = Path(__file__).parent
-for tool in ["rndmesh", "shellpack", "shell", "compress", "percolate", "lbflow", "lbflow_run", "palabos", "kcfit", "jam2d", "study", "threads"]:
-    path = here / f"bench_table_{tool}.py"
-    if not path.exists():
-        continue
+for path in sorted(here.glob("[0-9][0-9]-*.table.py")):
+    tool = path.name.removesuffix(".table.py").split("-", 1)[1]
     spec = importlib.util.spec_from_file_location(f"bench_table_{tool}", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
