@@ -29,8 +29,7 @@ print(f"jam,{n},{k},1e-15,{label},{wall / k:.4g},{wall:.4g},{its},{n * its / wal
 PY
 }
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "stage,N,packings,tolerance,accepted,seconds_per_packing,seconds,fire_iterations,particle_iterations_per_s,iterations_per_s,phi_J_mean,rejected_per_packing,command"
   jam_row 16 1:20 rattler_free_isostatic
   jam_row 50 1:10 rattler_free_isostatic
@@ -52,8 +51,7 @@ if command -v lmp >/dev/null; then  # lmp -h exits non-zero: keep it out of pipe
   lammps_version=$( (lmp -h 2>/dev/null || true) | grep -m1 -o 'Simulator - .*' | sed 's/Simulator - //')
 fi
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "# lammps=$lammps_version"
   echo "N,phi,tolerance,ours_iterations,ours_seconds,ours_particle_iterations_per_s,lammps_iterations,lammps_seconds,lammps_particle_iterations_per_s,speedup_time,speedup_per_iteration"
   for n in 50 256 1024; do
@@ -89,8 +87,7 @@ rm -rf "$work"
 
 echo "== shellpack FIRE on large systems, 1 and 2 threads (the chunked parallel force loop and FIRE passes)" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "N,threads,iterations,seconds,particle_iterations_per_s"
   for n in 1024 4096 16384; do
     for t in 1 2; do

@@ -27,8 +27,7 @@ print(f"{n},{meta['vertices_per_shell']},{threads},{len(steps)},{float(rows[0]['
 PY
 }
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "shells,vertices_per_shell,threads,steps,start_seconds,seconds,seconds_per_step,fire_iterations,iterations_per_s,volume_updates,phi_start,phi_end,vertex_radius"
   for threads in 1 2; do compress_row 16 4 20 $threads; done
   if [ "${BENCH_COMPRESS_LARGE:-1}" = 1 ]; then compress_row 50 5 3 2; fi
@@ -38,8 +37,7 @@ PY
 # time of the process (mesh and packing made beforehand).
 echo "== shellpack compress: 16 x 642 shells with faces, jamming to phi 0.95" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "shells,vertices_per_shell,contact,threads,phi_start,phi_end,steps,fire_iterations,volume_updates,wall_seconds"
   start=$(date +%s.%N)
   "$build/bin/shellpack" compress "$cmp_work/j16.xyz" --mesh "$cmp_work/ico4.off" --contact hertz-faces \

@@ -5,8 +5,7 @@
 echo "== percolate: labelling of N^3 images, ours (1 and 2 threads) vs scipy.ndimage.label (1 core)" >&2
 img_dir=$(mktemp -d)
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "image,N,porosity,threads,voxels,components,seconds,mvoxels_per_s,peak_rss_mb,bytes_per_voxel,scipy_seconds,scipy_mvoxels_per_s,scipy_components,speedup"
   for n in 128 256 512; do
     for kind in "random 0.35" "random 0.6" "packing"; do
@@ -49,8 +48,7 @@ rm -rf "$img_dir"
 
 echo "== percolate: voxelisation of 50 shells x 2562 vertices (icosahedral, D0 = 1) at delta = 0.03" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "shells,vertices_per_shell,triangles,delta,nx,ny,nz,threads,triangles_seconds,vertices_seconds,peak_rss_mb"
   for threads in 1 2; do "$bench/bench_voxel" voxelise $threads; done
 } | tee "$out/percolate_voxelise.csv" >&2

@@ -9,8 +9,7 @@
 # half-way and interpolated walls. Sourced by scripts/bench/run.sh ($bench, $out, $machine, $stamp).
 echo "== lbflow kernel: D3Q19 MLUPS beside a triad; sphere array against Zick & Homsy" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   "$bench/bench_lbm" speed 128 1 mrt 20
   "$bench/bench_lbm" speed 128 2 mrt 20 | tail -n +2
   "$bench/bench_lbm" speed 128 2 trt 20 | tail -n +2
@@ -18,7 +17,6 @@ echo "== lbflow kernel: D3Q19 MLUPS beside a triad; sphere array against Zick & 
   "$bench/bench_lbm" speed 128 2 mrt 20 float | tail -n +2
 } | tee "$out/lbflow_kernel.csv" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   "$bench/bench_lbm" sphere-array ${LBM_SPHERE_SIZES:-16 24 32}
 } | tee "$out/lbflow_sphere_array.csv" >&2

@@ -26,8 +26,7 @@ print(",".join([r["refine"], sys.argv[2], r["nx"], str(nodes), r["fluid_nodes"],
 PY
 }
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "refine,threads,voxels_per_side,nodes,fluid_nodes,porosity,steps,converged,seconds,mlups,bytes_per_fluid_node,peak_rss_mb,permeability_d02,tortuosity,triad_gbs,bound_mlups,bound_with_links_mlups"
   lb_row 1 1 200000
   lb_row 1 2 200000

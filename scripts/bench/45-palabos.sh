@@ -18,8 +18,7 @@ else
   "$build/bin/shellpack" jam -N 50 --seed 1 -q -o "$pal_dir/jam.xyz" --csv /dev/null
   "$build/bin/percolate" "$pal_dir/jam.xyz" --delta 0.04 -q -o "$pal_dir/c.vtk" --csv /dev/null
   {
-    echo "# machine=$machine"
-    echo "# date=$stamp"
+    bench_header
     pal_mpi 1 speed ${PAL_N:-128} 20 mrt
     pal_mpi 2 speed ${PAL_N:-128} 20 | tail -n +2
     pal_mpi 1 cluster "$pal_dir/c.vtk" 1 20 | tail -n +2
@@ -27,15 +26,13 @@ else
     pal_mpi 2 cluster "$pal_dir/c.vtk" 3 10 | tail -n +2
   } | tee "$out/palabos.csv" >&2
   {
-    echo "# machine=$machine"
-    echo "# date=$stamp"
+    bench_header
     "$bench/bench_palabos" lbflow-cluster "$pal_dir/c.vtk" 1 1 20
     "$bench/bench_palabos" lbflow-cluster "$pal_dir/c.vtk" 1 2 20 | tail -n +2
     "$bench/bench_palabos" lbflow-cluster "$pal_dir/c.vtk" 3 2 10 | tail -n +2
   } | tee "$out/palabos_lbflow_cluster.csv" >&2
   {
-    echo "# machine=$machine"
-    echo "# date=$stamp"
+    bench_header
     "$bench/bench_palabos" poiseuille
   } | tee "$out/palabos_duct.csv" >&2
   rm -rf "$pal_dir"

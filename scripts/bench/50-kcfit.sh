@@ -4,8 +4,7 @@
 # (the benchmark programs), $out, $machine and $stamp.
 echo "== kcfit: Eq. 5.8 fits on ln kappa (120 points) and a 1000-replica bootstrap; scipy curve_fit alongside" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "stage,model,points,threads,fits,seconds,fits_per_s"
   "$bench/bench_fit"
   "$bench/bench_fit" data | /usr/bin/python3 scripts/bench/kcfit_scipy.py || echo "# scipy timing failed" >&2

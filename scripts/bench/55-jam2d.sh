@@ -6,8 +6,7 @@
 # 2 threads, with the thesis's step reset and with --double-step. Sourced by scripts/bench/run.sh, which sets $bench, $out, $machine and $stamp.
 echo "== jam2d: jamming at L = 8, 10, 15, 20 sigma (1 thread)" >&2
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "box,seed,cells,phi_J,Z,f_u,seconds,fire_iterations,accepted,rejected"
   OMP_NUM_THREADS=1 "$bench/bench_jam2d" 8 1 3
   OMP_NUM_THREADS=1 "$bench/bench_jam2d" 10 1 3
@@ -16,8 +15,7 @@ echo "== jam2d: jamming at L = 8, 10, 15, 20 sigma (1 thread)" >&2
 } | tee "$out/jam2d_jamming.csv" >&2
 
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "box,packings,dphi,threads,step_after_acceptance,seconds,seconds_per_packing"
   for mode in reset double; do
     flag=; [ $mode = double ] && flag=--double-step

@@ -11,8 +11,7 @@ make -f scripts/study/study.mk --no-print-directory STUDY="$preset" STUDY_DIR="$
   >"$out/study.log" 2>&1 || { tail -20 "$out/study.log" >&2; echo "make bench: the study failed" >&2; exit 1; }
 wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "# study=$preset"
   echo "stage,tasks,total_s,mean_s,longest_s,campaign_wall_s"
   for stage in mesh jam compress analyze percolate flow; do

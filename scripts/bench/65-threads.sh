@@ -45,8 +45,7 @@ best_time() {
 }
 
 {
-  echo "# machine=$machine"
-  echo "# date=$stamp"
+  bench_header
   echo "# wait_policy=${OMP_WAIT_POLICY:-toolkit default (passive)}"
   echo "case,what,threads_1_s,threads_2_s,loaded_threads_2_s,loaded_over_quiet_1"
   for c in "${cases[@]}"; do
