@@ -102,12 +102,12 @@ jam2d-figures: deps all
 flow-figure: deps all
 	@scripts/flow_figure.sh $(BUILD) $(OUT)/figures
 
-# The demo pipeline (scripts/demo.sh): every tool chained, then the study at toy size and its
+# The demo pipeline (scripts/demo/run.sh): every tool chained, then the study at toy size and its
 # report; outputs in $(OUT)/demo/. Builds the programs only, not the tests.
 DEMO_TOOLS := rndmesh shellpack percolate lbflow kcfit jam2d
 run: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TOOLS)
-	@scripts/demo.sh $(BUILD) $(OUT)/demo
+	@scripts/demo/run.sh $(BUILD) $(OUT)/demo
 
 # The thesis's study (Chapters 4-5) as a resumable campaign of files (scripts/study/study.mk):
 # STUDY=default|thesis|demo|tiny picks the sizes, and N, SEEDS, VERTICES, PHI, DELTA, FLOW_DELTA,

@@ -4,7 +4,7 @@
 # flow-figure does at a larger size), then every model of thesis Table S5.1 on the SYNTHETIC
 # sample tables of data/kcfit (points drawn from the thesis's fitted laws with noise,
 # scripts/kcfit_sample_data.py: enough points for every model, and the percolation outcomes
-# and thresholds that only many packings give). Sourced by scripts/demo.sh, which sets $bin,
+# and thresholds that only many packings give). Sourced by scripts/demo/run.sh, which sets $bin,
 # $out and step(); appends to $out/README.txt what it made.
 chain="$out/chain" scales=0.90,0.94,0.98,1.02,1.06,1.10,1.14
 mkdir -p "$chain"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make run, jam2d: a colony of budding cells grown from two cells until jammed in a periodic
 # box of 7 sigma (Fig. 3.1c-g), then beyond jamming with strong feedback; the moduli of the packing. Sourced
-# by scripts/demo.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
+# by scripts/demo/run.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
 step "jam2d grow: two cells to the jamming point in a periodic box of 7 sigma (Fig. 3.1c-g) (thesis 3.4.2)"
 "$bin/jam2d" grow --box 7 --seed 1 -o "$out/cells_jammed.xyz" -q >"$out/cells_growth.csv"
 step "jam2d grow: the same colony to phi_J + 0.05 with feedback P0 = 0.001, then its moduli"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # make run, rndmesh: two sphere meshes, their quality and the annealing trace. Sourced by
-# scripts/demo.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
+# scripts/demo/run.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
 step "rndmesh: icosahedral sphere mesh, level 4 (642 vertices)"
 "$bin/rndmesh" icosa --level 4 -o "$out/icosa4.off"
 step "rndmesh: 642 annealed random points + spherical Delaunay (thesis schedule)"

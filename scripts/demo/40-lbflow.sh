@@ -3,7 +3,7 @@
 # simple cubic array when shellpack's packing is absent): permeability and tortuosity, the
 # velocity field for ParaView, the convergence history; then the same packing read as spheres
 # (exact walls, interpolated bounce-back). Seconds at this size (delta = 0.1 D0, M = 1).
-# Sourced by scripts/demo.sh, which sets $bin, $out and step(); appends to $out/README.txt.
+# Sourced by scripts/demo/run.sh, which sets $bin, $out and step(); appends to $out/README.txt.
 spheres="$out/jammed.xyz"
 [ -f "$spheres" ] || spheres=data/percolate/simple_cubic_4x4x4.xyz
 step "lbflow: $(basename "$spheres") voxelised at delta = 0.1 D0 (percolate), flow at M = 1"

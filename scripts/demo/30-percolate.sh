@@ -3,7 +3,7 @@
 # sphere packing (shellpack's jammed packing once it exists, else the simple cubic array of
 # data/percolate), an inflation sweep turned into percolation probability, and the thesis's
 # caveat on one closed shell (vertex marking leaks, triangle marking does not). Sourced by
-# scripts/demo.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
+# scripts/demo/run.sh, which sets $bin, $out and step(); appends to $out/README.txt what it made.
 spheres="$out/jammed.xyz"
 [ -f "$spheres" ] || spheres=data/percolate/simple_cubic_4x4x4.xyz
 step "percolate: $(basename "$spheres") inflated by 1.2, delta = 0.04 and 0.05 D0"

@@ -7,12 +7,12 @@ bin="$build/bin"
 mkdir -p "$out"
 step() { printf '\n== %s\n' "$*" >&2; }
 
-# Each tool's stage is scripts/demo_<tool>.sh, run in pipeline order; later stages read the
-# files of earlier ones. Each appends a description of its outputs to $out/README.txt.
+# Each tool's stage is a file NN-<tool>.sh of this folder, sourced in the order of NN (pipeline
+# order); later stages read the files of earlier ones. Each appends a description of its
+# outputs to $out/README.txt.
 printf 'Outputs of make run:\n' >"$out/README.txt"
-for tool in rndmesh shellpack percolate lbflow kcfit jam2d study; do
-  script="scripts/demo_$tool.sh"
-  if [ -f "$script" ]; then source "$script"; fi
+for script in "$(dirname "${BASH_SOURCE[0]}")"/[0-9][0-9]-*.sh; do
+  source "$script"
 done
 
 printf '\n' >&2

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make run, shellpack: a jammed packing of 32 soft spheres and its structure; 16 elastic shells
 # squeezed from a jammed packing towards confluence (read by lbflow's stage). Sourced by
-# scripts/demo.sh ($bin, $out, step()).
+# scripts/demo/run.sh ($bin, $out, step()).
 step "shellpack jam: 32 Hertzian spheres jammed at P ~ 1e-8 E (thesis 5.5.1), rattler-free and isostatic"
 "$bin/shellpack" jam -N 32 --seed 7 -o "$out/jammed.xyz" >"$out/jam.csv"
 step "shellpack structure: g(r), contacts, rattlers and contact forces of that packing"
