@@ -80,27 +80,27 @@ tables: deps all
 
 # Figs S5.1/S5.2: phi_J and Z of 100 jammed packings per N against the thesis ($(OUT)/figures/).
 jamming-figure: deps all
-	@scripts/jamming_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/jamming.sh $(BUILD) $(OUT)/figures
 
 # Figs B.4-B.10: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
 shell-figures: deps all
-	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/shell.sh $(BUILD) $(OUT)/figures
 
 # Figs 4.3-4.6 at N = 32, 50: shellpack jam -> compress -> analyze -> kcfit (COMPRESS_N, COMPRESS_LEVEL; $(OUT)/figures/).
 compress-figures: deps all
-	@scripts/compress_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/compress.sh $(BUILD) $(OUT)/figures
 
 # Fig. 5.2C-D's trend on jammed spheres: shellpack jam -> percolate -> kcfit ($(OUT)/figures/).
 percolation-figure: deps all
-	@scripts/percolation_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/percolation.sh $(BUILD) $(OUT)/figures
 
 # Chapter 3 at small boxes (jam2d): Figs 3.1h, 3.2a, 3.3, S3.2 and the targets' table ($(OUT)/figures/).
 jam2d-figures: deps all
-	@scripts/jam2d_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/jam2d.sh $(BUILD) $(OUT)/figures
 # The Chapter 5 chain on inflated jammed spheres: shellpack jam -> percolate -> lbflow -> kcfit,
 # kappa and tau_H against porosity with Eq. 5.8 and the tortuosity law, and the refinement M ($(OUT)/figures/).
 flow-figure: deps all
-	@scripts/flow_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/flow.sh $(BUILD) $(OUT)/figures
 
 # The demo pipeline (scripts/demo/run.sh): every tool chained, then the study at toy size and its
 # report; outputs in $(OUT)/demo/. Builds the programs only, not the tests.

@@ -10,12 +10,12 @@ step "rndmesh: quality metrics of both meshes"
 grep -v '^#' "$out/mesh_stats.csv" | awk -F, 'NR == 1 { printf "%-22s %8s %6s %7s %7s %7s %12s\n", $1, $2, $3, $8, $9, $10, $19; next }
   { printf "%-22s %8d %6d %7.3f %7.3f %7.3f %12.2e\n", $1, $2, $3, $8, $9, $10, $19 }' >&2
 step "gnuplot: the annealing trace"
-gnuplot -e "in='$out/anneal.csv'; out='$out/anneal.png'" scripts/plot_anneal.gp
+gnuplot -e "in='$out/anneal.csv'; out='$out/anneal.png'" scripts/figures/plot_anneal.gp
 
 cat >>"$out/README.txt" <<EOT
   icosa4.off      icosahedral mesh (MeshLab, ParaView)
   cell.off        Monte Carlo mesh, N = 642 (MeshLab, ParaView)
   anneal.csv      temperature, acceptance and energy per anneal
-  anneal.png      the same as a figure (gnuplot, scripts/plot_anneal.gp)
+  anneal.png      the same as a figure (gnuplot, scripts/figures/plot_anneal.gp)
   mesh_stats.csv  quality metrics of both meshes, one row each
 EOT

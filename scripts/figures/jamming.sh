@@ -51,5 +51,5 @@ with open(sys.argv[1], "w") as f:
         f.write("{},{},{},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.2f},{:.3f}\n".format(*r))
 PY
 cat "$out/phi_J.csv" >&2
-gnuplot -e "in='$out/phi_J.csv'; out='$out/phi_J.png'" scripts/plot_phi_j.gp
+gnuplot -e "in='$out/phi_J.csv'; out='$out/phi_J.png'" scripts/figures/plot_phi_j.gp
 echo "make jamming-figure: $out/phi_J.png and $out/phi_J.csv" >&2

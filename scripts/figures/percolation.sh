@@ -25,5 +25,5 @@ echo "== kcfit: sigmoid per delta, then the threshold law on those fits" >&2
   --plot "$out/percolation_fit.png"
 "$build/bin/kcfit" "$out/phi_c.csv" --model threshold -o "$out/threshold_fit.csv" --plot "$out/threshold_fit.png"
 gnuplot -e "prob='$out/percolation_probability.csv'; phic='$out/phi_c.csv'; law='$out/threshold_fit.csv'; out='$out/percolation.png'" \
-  scripts/plot_percolation.gp
+  scripts/figures/plot_percolation.gp
 echo "make percolation-figure: $out/percolation.png, $out/phi_c.csv, $out/threshold_fit.csv" >&2

@@ -41,5 +41,5 @@ for m in 1 2 3; do
   rm "$dir/refine_$m.csv"
 done
 gnuplot -e "flows='$dir/flows.csv'; kfit='$dir/kappa_fit.csv'; tfit='$dir/tau_fit.csv'; refine='$dir/refine.csv'; out='$out/flow.png'" \
-  scripts/plot_flow.gp
+  scripts/figures/plot_flow.gp
 echo "make flow-figure: $out/flow.png, $dir/flows.csv, $dir/kappa_fit.csv, $dir/tau_fit.csv, $dir/refine.csv" >&2

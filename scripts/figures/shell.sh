@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Figs B.4-B.10 of the thesis: each `shellpack bench-mechanics` case at the thesis's sizes
 # (--full), split into one table per model, drawn over the analytic curve by
-# scripts/plot_shell_benchmark.gp. Usage: scripts/shell_figures.sh BUILD_DIR OUT_DIR [CASE...]
+# scripts/figures/plot_shell_benchmark.gp. Usage: scripts/figures/shell.sh BUILD_DIR OUT_DIR [CASE...]
 # About three minutes on 2 cores (buckling: one more minute, one core).
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/figures}
 shift 2 || true
 cases=${*:-sphere poisson plate-point plate-uniform plate-large plates-contact buckling}
-src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+src=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 shellpack="$build/bin/shellpack"
 mkdir -p "$out/shell"
 for c in $cases; do
@@ -32,6 +32,6 @@ for c in $cases; do
                          $1 == m && (!l || $l == "thesis")' "$dir/computed.csv"; } >"$f"
     files="$files $f"
   done
-  gnuplot -e "analytic='$dir/analytic.csv'; computed='${files# }'; out='$out/shell_$c.png'" "$src/scripts/plot_shell_benchmark.gp"
+  gnuplot -e "analytic='$dir/analytic.csv'; computed='${files# }'; out='$out/shell_$c.png'" "$src/scripts/figures/plot_shell_benchmark.gp"
   echo "shell-figures: wrote $out/shell_$c.png" >&2
 done

@@ -1,5 +1,5 @@
 # The figures of make jam2d-figures (thesis Figs 3.1h, 3.2a, 3.3, S3.2 at small boxes).
-# Usage: gnuplot -e "dir='out/figures'" scripts/plot_jam2d.gp
+# Usage: gnuplot -e "dir='out/figures'" scripts/figures/plot_jam2d.gp
 set terminal pngcairo size 860,580 font ",11"
 set grid
 set key left top

@@ -30,7 +30,7 @@ seed=${COMPRESS_SEED:-1}
 contact=${COMPRESS_CONTACT:-hertz-vertices}
 high_n=${COMPRESS_HIGH_N:-32}
 high_phi=${COMPRESS_HIGH_PHI:-0.95}
-src=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+src=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bin="$build/bin"
 # compress DIR N OPTIONS...: one jammed packing of N spheres and the cell in DIR, the shells
 # compressed from it with OPTIONS, a checkpoint every few minutes in DIR/compress.chk, the rows
@@ -89,7 +89,7 @@ if [ -n "${runs# }" ]; then
   first=${runs# }; first=${first%% *}
   packs=$(ls "$first"/pack_*.off | sort | sed -n '1p;2p;4p;8p' | tr '\n' ' ')
   gnuplot -e "runs='${runs# }'; labels='$labels'; packs='${packs% }'; packlabels='0.001 0.01 0.1 0.3'; out='$out/shell_compress.png'" \
-    "$src/scripts/plot_compress.gp"
+    "$src/scripts/figures/plot_compress.gp"
   echo "make compress-figures: $out/shell_compress.png" >&2
 fi
 
@@ -121,7 +121,7 @@ if [ "$high_n" -gt 0 ]; then
     packs="$packs $dir/pack_$phi.off" packlabels="$packlabels $phi"
   done
   gnuplot -e "runs='$dir'; labels='N=$high_n'; packs='${packs# }'; packlabels='${packlabels# }'; packvar='{/Symbol f}'; out='$out/shell_compress_faces.png'" \
-    "$src/scripts/plot_compress.gp"
+    "$src/scripts/figures/plot_compress.gp"
   echo "make compress-figures: $out/shell_compress_faces.png" >&2
 fi
 

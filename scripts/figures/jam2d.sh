@@ -167,5 +167,5 @@ with open(f"{out}/jam2d_summary.md", "w") as g:
         g.write(f"| {r[0]} | {r[1]} | {r[2]} |\n")
 print(open(f"{out}/jam2d_summary.md").read())
 PY
-gnuplot -e "dir='$out'" scripts/plot_jam2d.gp
+gnuplot -e "dir='$out'" scripts/figures/plot_jam2d.gp
 echo "make jam2d-figures: $out/jam2d_summary.md, $out/jam2d_fig3_1h.png, jam2d_fig3_2.png, jam2d_fig3_3.png, jam2d_figS3_2.png" >&2

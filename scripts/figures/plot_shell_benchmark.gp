@@ -1,7 +1,7 @@
 # A shell benchmark of Appendix B: the analytic curve (lib/elasticity's analytic_curve, e.g.
 # from `shellpack bench-mechanics`) with computed tables overlaid, one panel per compared column.
 # gnuplot -e "analytic='sphere_analytic.csv'; computed='svk.csv springs-kot.csv'; out='sphere.png'" \
-#         scripts/plot_shell_benchmark.gp
+#         scripts/figures/plot_shell_benchmark.gp
 # The analytic table names its case (# case=), the columns to compare (# compare=, one panel
 # each) and extra analytic columns for the first panel (# references=); its first column is x.
 # Every computed table must have the x column and the compared columns under the same names

@@ -1,5 +1,5 @@
 # Annealing trace of `rndmesh random --trace`: acceptance and energy per point against T.
-# gnuplot -e "in='anneal.csv'; out='anneal.png'" scripts/plot_anneal.gp
+# gnuplot -e "in='anneal.csv'; out='anneal.png'" scripts/figures/plot_anneal.gp
 # The title names N and the seed, read from the trace's "# points=" and "# seed=" lines.
 meta(key) = system(sprintf("sed -n 's/^# %s=//p' '%s' | head -n 1", key, in))
 N = meta("points")
