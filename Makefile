@@ -76,7 +76,7 @@ bench: deps
 # Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
 tables: deps all
 	@mkdir -p $(OUT)/tables
-	@scripts/thesis_tables.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
+	@scripts/tables/thesis.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
 
 # Figs S5.1/S5.2: phi_J and Z of 100 jammed packings per N against the thesis ($(OUT)/figures/).
 jamming-figure: deps all

@@ -3,7 +3,7 @@
 # lbflow, then Eq. 5.8 and the tortuosity law fitted to lbflow's permeabilities, as make
 # flow-figure does at a larger size), then every model of thesis Table S5.1 on the SYNTHETIC
 # sample tables of data/kcfit (points drawn from the thesis's fitted laws with noise,
-# scripts/kcfit_sample_data.py: enough points for every model, and the percolation outcomes
+# scripts/data/kcfit_sample_data.py: enough points for every model, and the percolation outcomes
 # and thresholds that only many packings give). Sourced by scripts/demo/run.sh, which sets $bin,
 # $out and step(); appends to $out/README.txt what it made.
 chain="$out/chain" scales=0.90,0.94,0.98,1.02,1.06,1.10,1.14
@@ -13,7 +13,7 @@ step "the chain to a fitted law: 4 jammed packings of 32 spheres inflated by $sc
 "$bin/percolate" "$chain"/jam_*.xyz --delta 0.08 --scale "$scales" -q --csv "$chain/percolate.csv" \
   -o "$chain/c_{name}_{scale}.vtk"
 # shellcheck disable=SC2046
-"$bin/lbflow" $(scripts/percolating_images.sh "$chain/percolate.csv" "$chain" "$scales") --refine 1 -q \
+"$bin/lbflow" $(scripts/data/percolating_images.sh "$chain/percolate.csv" "$chain" "$scales") --refine 1 -q \
   -o "$chain/flows.csv"
 "$bin/kcfit" "$chain/flows.csv" --model kc-percolation --y permeability_d02 --loss log -o "$out/kc_flow_fit.csv"
 "$bin/kcfit" "$chain/flows.csv" --model tortuosity -o "$out/tortuosity_flow_fit.csv"

@@ -22,7 +22,7 @@ echo "== shellpack jam -N $n --seeds 1:$count" >&2
 echo "== percolate: $count packings x scales $scales at delta $delta" >&2
 "$build/bin/percolate" "$dir"/jammed/jam_*.xyz --delta "$delta" --scale "$scales" -q --csv "$dir/percolate.csv" \
   -o "$dir/images/c_{name}_{scale}.vtk"
-images=$(scripts/percolating_images.sh "$dir/percolate.csv" "$dir/images" "$scales")
+images=$(scripts/data/percolating_images.sh "$dir/percolate.csv" "$dir/images" "$scales")
 echo "== lbflow: $(echo "$images" | wc -l) percolating clusters at M = $M" >&2
 # shellcheck disable=SC2086
 "$build/bin/lbflow" $images --refine "$M" --threads 2 -o "$dir/flows.csv"

@@ -4,7 +4,7 @@
 # mesh turned into a packing OFF with walls at z = 0 and the gap, read by `shellpack analyze`:
 # the wall pressure P over the coverage Theta (both per area of the arbitrary 10 x 10 walls:
 # their ratio does not depend on it) against the turgor Pi. Prints a Markdown table
-# (README, shellpack analyze). About 30 s. Usage: scripts/analyze_plates_table.sh [BIN_DIR]
+# (README, shellpack analyze). About 30 s. Usage: scripts/tables/analyze_plates.sh [BIN_DIR]
 set -euo pipefail
 bin=${1:-build/bin}
 work=$(mktemp -d)
@@ -15,7 +15,7 @@ echo "|---|---|---|---|"
 for sq in 0.05 0.1 0.2 0.3 0.4; do
   "$bin/shellpack" shell --mesh "$work/cell.off" -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume \
     --walls 2.1 --squeeze "$sq" --squeeze-steps 4 -q -o "$work/shell.off" >"$work/shell.csv"
-  python3 "$(dirname "$0")/plates_to_packing.py" "$work/shell.off" "$work/shell.csv" "$work/pack.off" \
+  python3 "$(dirname "$0")/../data/plates_to_packing.py" "$work/shell.off" "$work/shell.csv" "$work/pack.off" \
     E=1 nu=0.5 vertex_radius=0.02 P0=0.0025
   "$bin/shellpack" analyze "$work/pack.off" -q 2>/dev/null | python3 -c "
 import sys, csv

@@ -3,7 +3,7 @@
 compress.csv files (the rows where a packing OFF was written, phi a multiple of 0.05), the
 wall pressure P, the coverage Theta, P/Theta and the mean turgor <Pi>, side by side.
 
-usage: compress_walls_table.py LABEL=compress.csv [LABEL=compress.csv ...]  (markdown to stdout)
+usage: scripts/tables/compress_walls.py LABEL=compress.csv [LABEL=compress.csv ...]  (markdown to stdout)
 """
 import csv
 import sys

@@ -34,4 +34,4 @@ row() {  # label N T_end printed_qA printed_qtheta printed_q
     row "T$1" 2500 "$1" "$2" "$3" "$4"
   done
 } > "$out/table_a6.csv"
-/usr/bin/python3 scripts/thesis_tables_md.py "$out" "$seed"
+/usr/bin/python3 scripts/tables/thesis_md.py "$out" "$seed"

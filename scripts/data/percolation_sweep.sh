@@ -3,7 +3,7 @@
 # trend of thesis Fig. 5.2C): every packing at every scale and every delta through percolate,
 # then `percolate sweep` per N and delta. For shellpack's jammed packings:
 #   shellpack jam -N 32 --seeds 1:50 -o 'jam_{seed}.xyz'
-#   scripts/percolation_sweep.sh -b build -d 0.03,0.04,0.05 -s "1.00 1.02 1.04 1.06 1.08 1.10" -o out/perc jam_*.xyz
+#   scripts/data/percolation_sweep.sh -b build -d 0.03,0.04,0.05 -s "1.00 1.02 1.04 1.06 1.08 1.10" -o out/perc jam_*.xyz
 # Writes OUT/percolate.csv (one row per packing, scale and delta) and
 # OUT/percolation_probability.csv (binned per N and delta over the porosity column `porosity`:
 # columns particles, delta, porosity, porosity_low, porosity_high, packings, percolating,

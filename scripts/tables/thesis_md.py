@@ -1,4 +1,4 @@
-"""Markdown of scripts/thesis_tables.sh's CSV files: ours beside the printed values."""
+"""Markdown of scripts/tables/thesis.sh's CSV files: ours beside the printed values."""
 import csv
 import sys
 

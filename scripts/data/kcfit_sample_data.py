@@ -2,7 +2,7 @@
 """Writes the SYNTHETIC sample tables of data/kcfit/ (not simulation results): points drawn
 from the laws the thesis fitted (Table S5.1, N = 50, delta = 0.04) with noise, so that kcfit's
 demo and tests have percolate/lbflow-like input before those tools exist.
-    /usr/bin/python3 scripts/kcfit_sample_data.py data/kcfit
+    /usr/bin/python3 scripts/data/kcfit_sample_data.py data/kcfit
 Prefactors C are not printed in the thesis; the values here are illustrative."""
 import math
 import random
