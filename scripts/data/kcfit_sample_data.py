@@ -10,7 +10,7 @@ import sys
 
 out = sys.argv[1] if len(sys.argv) > 1 else "data/kcfit"
 rng = random.Random(20261123)
-head = ("# synthetic=1\n# source=scripts/kcfit_sample_data.py (not simulation output)\n")
+head = ("# synthetic=1\n# source=scripts/data/kcfit_sample_data.py (not simulation output)\n")
 
 with open(f"{out}/flow_synthetic.csv", "w") as f:
     f.write(head)
