@@ -20,7 +20,7 @@ all: configure
 
 # Installs the Debian packages the project needs; a no-op when all are present.
 deps:
-	@scripts/install_debian_packages.sh deps $(DEB_PACKAGES)
+	@scripts/ci/install_debian_packages.sh deps $(DEB_PACKAGES)
 
 configure: $(BUILD)/CMakeCache.txt
 $(BUILD)/CMakeCache.txt:
@@ -32,7 +32,7 @@ $(BUILD)/CMakeCache.txt:
 EXAMPLES ?= small
 export EXAMPLES
 test: deps all
-	@scripts/run_tests.sh $(BUILD)
+	@scripts/ci/run_tests.sh $(BUILD)
 
 # The same tests under AddressSanitizer and UBSan (slower; not part of CI).
 test-asan: deps
@@ -49,7 +49,7 @@ FUZZ_READERS := off xyz csv vtk packing
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 .PHONY: fuzz
 fuzz:
-	@scripts/install_debian_packages.sh fuzz $(FUZZ_PACKAGES)
+	@scripts/ci/install_debian_packages.sh fuzz $(FUZZ_PACKAGES)
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMP_FUZZ=ON -DBUILD_TESTING=OFF $(FUZZ_CMAKE_FLAGS)
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_READERS))
@@ -67,47 +67,47 @@ fuzz:
 # Performance figures for the README's benchmark table (written to $(OUT)/bench/).
 # Installs Palabos first and configures again, so that CMake finds it (bench_palabos).
 bench: deps
-	@scripts/install_debian_packages.sh bench $(BENCH_PACKAGES)
+	@scripts/ci/install_debian_packages.sh bench $(BENCH_PACKAGES)
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
-	@scripts/bench.sh $(BUILD) $(OUT)/bench
+	@scripts/bench/run.sh $(BUILD) $(OUT)/bench
 
 # Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
 tables: deps all
 	@mkdir -p $(OUT)/tables
-	@scripts/thesis_tables.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
+	@scripts/tables/thesis.sh $(BUILD) $(OUT)/tables | tee $(OUT)/tables/tables.md
 
 # Figs S5.1/S5.2: phi_J and Z of 100 jammed packings per N against the thesis ($(OUT)/figures/).
 jamming-figure: deps all
-	@scripts/jamming_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/jamming.sh $(BUILD) $(OUT)/figures
 
 # Figs B.4-B.10: every shellpack bench-mechanics case beside its analytic curve ($(OUT)/figures/).
 shell-figures: deps all
-	@scripts/shell_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/shell.sh $(BUILD) $(OUT)/figures
 
 # Figs 4.3-4.6 at N = 32, 50: shellpack jam -> compress -> analyze -> kcfit (COMPRESS_N, COMPRESS_LEVEL; $(OUT)/figures/).
 compress-figures: deps all
-	@scripts/compress_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/compress.sh $(BUILD) $(OUT)/figures
 
 # Fig. 5.2C-D's trend on jammed spheres: shellpack jam -> percolate -> kcfit ($(OUT)/figures/).
 percolation-figure: deps all
-	@scripts/percolation_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/percolation.sh $(BUILD) $(OUT)/figures
 
 # Chapter 3 at small boxes (jam2d): Figs 3.1h, 3.2a, 3.3, S3.2 and the targets' table ($(OUT)/figures/).
 jam2d-figures: deps all
-	@scripts/jam2d_figures.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/jam2d.sh $(BUILD) $(OUT)/figures
 # The Chapter 5 chain on inflated jammed spheres: shellpack jam -> percolate -> lbflow -> kcfit,
 # kappa and tau_H against porosity with Eq. 5.8 and the tortuosity law, and the refinement M ($(OUT)/figures/).
 flow-figure: deps all
-	@scripts/flow_figure.sh $(BUILD) $(OUT)/figures
+	@scripts/figures/flow.sh $(BUILD) $(OUT)/figures
 
-# The demo pipeline (scripts/demo.sh): every tool chained, then the study at toy size and its
+# The demo pipeline (scripts/demo/run.sh): every tool chained, then the study at toy size and its
 # report; outputs in $(OUT)/demo/. Builds the programs only, not the tests.
 DEMO_TOOLS := rndmesh shellpack percolate lbflow kcfit jam2d
 run: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TOOLS)
-	@scripts/demo.sh $(BUILD) $(OUT)/demo
+	@scripts/demo/run.sh $(BUILD) $(OUT)/demo
 
 # The thesis's study (Chapters 4-5) as a resumable campaign of files (scripts/study/study.mk):
 # STUDY=default|thesis|demo|tiny picks the sizes, and N, SEEDS, VERTICES, PHI, DELTA, FLOW_DELTA,

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   double t0 = now();
   while (now() - t0 < 1.0 || fits < 10) best = fit::fit(m, x, y, o), ++fits;
   row("fit_multistart", 1, fits, now() - t0);
-  // One start, (C, phi_c, gamma) = (40, 0.14, 1), as scripts/bench_kcfit_scipy.py gives curve_fit.
+  // One start, (C, phi_c, gamma) = (40, 0.14, 1), as scripts/bench/kcfit_scipy.py gives curve_fit.
   fit::FitOptions one = o;
   one.start = {40, 0.14, 1.0};
   fits = 0;

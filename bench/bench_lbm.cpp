@@ -9,7 +9,7 @@
 //                                              and of the even and odd AA steps alone
 //   bench_lbm triad THREADS                    the triad alone: GB/s and the MLUPS bounds of a
 //                                              double D3Q19 update, 304 and 340 bytes
-//                                              (bench_lbflow_run.sh puts them beside lbflow's runs)
+//                                              (scripts/bench/40-lbflow_run.sh puts them beside lbflow's runs)
 //   bench_lbm sphere-array [N...]              kappa of the simple cubic sphere array against
 //                                              Zick & Homsy (1982) for several solid fractions and
 //                                              resolutions, half-way vs interpolated bounce-back

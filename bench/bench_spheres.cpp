@@ -1,4 +1,4 @@
-// Benchmarks of the soft-sphere machinery (make bench, scripts/bench_shellpack.sh):
+// Benchmarks of the soft-sphere machinery (make bench, scripts/bench/15-shellpack.sh):
 //   bench_spheres jam N SEEDS [TOL [first]]  time per jammed packing, FIRE iterations per
 //                                        second; "first" accepts the first jammed packing
 //   bench_spheres fire N PHI TOL SEED [DATA [TABLE]]

@@ -1,4 +1,4 @@
-// percolate's hot loops for make bench (scripts/bench_percolate.sh):
+// percolate's hot loops for make bench (scripts/bench/30-percolate.sh):
 //   bench_voxel label N POROSITY THREADS [IMAGE.u8]    random N^3 image (void with probability POROSITY)
 //   bench_voxel packing N THREADS [IMAGE.u8]           pore space of 64 shells (642 vertices each) on
 //                                                      a 4x4x4 lattice, voxelised on N^3

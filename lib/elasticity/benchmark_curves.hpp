@@ -1,7 +1,7 @@
 #pragma once
 // The analytic reference curve of each shell benchmark of Appendix B.5-B.7, tabulated on a grid
 // at the thesis's parameters, as a CSV table (docs/formats.md) that
-// scripts/plot_shell_benchmark.gp overlays on a computed table with the same x and y columns.
+// scripts/figures/plot_shell_benchmark.gp overlays on a computed table with the same x and y columns.
 //
 // Cases and their columns (x first; the computed table must have the x column and the y
 // column(s) marked *):

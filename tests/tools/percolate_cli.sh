@@ -262,10 +262,10 @@ case_sweep_refuses_other_tables() {
   expect_error 2 "n.csv:1: connectivity '26' differs" "$percolate" sweep a.csv n.csv -o out.csv
 }
 case_sweep_script() {
-  # scripts/percolation_sweep.sh: the pipeline for shellpack's jammed packings, on the simple
+  # scripts/data/percolation_sweep.sh: the pipeline for shellpack's jammed packings, on the simple
   # cubic array: probability 1 at high porosity, 0 once the channels close (r > a/sqrt 2).
   cp "$sc" a.xyz
-  bash "$src/scripts/percolation_sweep.sh" -b "$bin/.." -d 0.05,0.1 -s "1.0 1.3 1.75 1.8" -n 2 -o res a.xyz \
+  bash "$src/scripts/data/percolation_sweep.sh" -b "$bin/.." -d 0.05,0.1 -s "1.0 1.3 1.75 1.8" -n 2 -o res a.xyz \
     2>/dev/null || fail "script"
   [ "$(grep -vc '^#' res/percolate.csv)" = 9 ] || fail "rows: $(cat res/percolate.csv)"
   [ "$(grep -v '^#' res/percolation_probability.csv | awk -F, 'NR > 1 { print $2, $8 }' | sort -u | tr '\n' ' ')" = \

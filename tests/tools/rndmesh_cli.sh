@@ -211,8 +211,8 @@ case_trace_names_n_and_seed() {
   "$rndmesh" random -n 50 --seed 9 --sweeps 2 --anneals 5 --trace tr.csv -o m.off -q || fail "run"
   grep -qx "# points=50" tr.csv || fail "no points line: $(head tr.csv)"
   grep -qx "# seed=9" tr.csv || fail "no seed line"
-  # scripts/plot_anneal.gp (make run's anneal.png) puts both in its title
-  local gp="$cli_script_dir/../../scripts/plot_anneal.gp"
+  # scripts/figures/plot_anneal.gp (make run's anneal.png) puts both in its title
+  local gp="$cli_script_dir/../../scripts/figures/plot_anneal.gp"
   title=$(gnuplot -e "in='tr.csv'; out='anneal.png'; load '$gp'; print sprintf('N = %s points on the sphere, seed %s', N, seed)" 2>&1) ||
     fail "gnuplot: $title"
   [ "$title" = "N = 50 points on the sphere, seed 9" ] || fail "title values: $title"

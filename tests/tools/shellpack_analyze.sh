@@ -118,13 +118,13 @@ case_walls() {
   expect_error 2 "walls.off: not periodic on every axis: no g(r) for --rdf" run walls.off -o out.csv --rdf out_rdf.csv
 }
 case_plates_pressure_over_coverage_near_turgor() {
-  # Fig. 4.5b on one shell (scripts/analyze_plates_table.sh, there at 2562 vertices): a
+  # Fig. 4.5b on one shell (scripts/tables/analyze_plates.sh, there at 2562 vertices): a
   # 642-vertex membrane squeezed between plates by shellpack shell; P / Theta (the mean
   # stress on the contact patch) is near Pi.
   "$rndmesh" icosa --level 4 -r 1 -o c4.off -q || fail "rndmesh"
   "$shellpack" shell --mesh c4.off -E 1 --nu 0.5 -t 0.02 --pressure 0.0025 --pressure-model volume --walls 2.1 \
     --squeeze 0.3 --squeeze-steps 3 -q -o squeezed.off >squeezed.csv || fail "shellpack shell"
-  python3 "$src/scripts/plates_to_packing.py" squeezed.off squeezed.csv plates.off E=1 nu=0.5 vertex_radius=0.02 ||
+  python3 "$src/scripts/data/plates_to_packing.py" squeezed.off squeezed.csv plates.off E=1 nu=0.5 vertex_radius=0.02 ||
     fail "packing"
   run plates.off >out.csv 2>/dev/null || fail "analyze"
   awk -v q="$(col out.csv wall_pressure_over_coverage_P)" -v t="$(col out.csv turgor_mean_P)" \
