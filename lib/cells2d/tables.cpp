@@ -24,13 +24,6 @@ double parse_value(const std::string& token, const std::string& text) {
   return v;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string p; std::getline(in, p, sep);) parts.push_back(p);
-  if (!text.empty() && text.back() == sep) parts.emplace_back();
-  return parts;
-}
 }  // namespace
 
 std::vector<std::string> growth_columns() {
@@ -75,7 +68,7 @@ double parse_feedback(const std::string& text) {
 
 std::vector<double> parse_feedback_list(const std::string& text) {
   std::vector<double> out;
-  for (const auto& t : split(text, ',')) out.push_back(parse_feedback(t));
+  for (const auto& t : cli::split_fields(text, ',')) out.push_back(parse_feedback(t));
   if (out.empty()) throw UsageError("empty list");
   return out;
 }

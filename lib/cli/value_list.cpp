@@ -16,18 +16,19 @@ double parse_number(const std::string& token, const std::string& text) {
   return v;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
+}  // namespace
+
+std::vector<std::string> split_fields(const std::string& text, char sep) {
   std::vector<std::string> parts;
   std::stringstream in(text);
   for (std::string p; std::getline(in, p, sep);) parts.push_back(p);
   if (!text.empty() && text.back() == sep) parts.emplace_back();
   return parts;
 }
-}  // namespace
 
 std::vector<double> parse_value_list(const std::string& text) {
   std::vector<double> out;
-  const auto colon = split(text, ':');
+  const auto colon = split_fields(text, ':');
   if (colon.size() == 3) {
     const double first = parse_number(colon[0], text), last = parse_number(colon[1], text),
                  step = parse_number(colon[2], text);
@@ -37,7 +38,7 @@ std::vector<double> parse_value_list(const std::string& text) {
     if (n > 100000) throw UsageError("'" + text + "' names more than 100000 values");
     for (long k = 0; k <= n; ++k) out.push_back(first + static_cast<double>(k) * step);
   } else if (colon.size() == 1) {
-    for (const auto& t : split(text, ',')) out.push_back(parse_number(t, text));
+    for (const auto& t : split_fields(text, ',')) out.push_back(parse_number(t, text));
   } else {
     throw UsageError("expected FIRST:LAST:STEP or a comma list, got '" + text + "'");
   }

@@ -13,4 +13,7 @@ namespace cmp::cli {
 // or any other shape.
 std::vector<double> parse_value_list(const std::string& text);
 
+// text cut at every sep ("a,,b," -> a, "", b, ""); "" gives none.
+std::vector<std::string> split_fields(const std::string& text, char sep);
+
 }  // namespace cmp::cli

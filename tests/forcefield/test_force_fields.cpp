@@ -57,44 +57,17 @@ std::vector<std::string> names_of(const Table& table) {
 
 const shell::MaterialParameters kMaterial{3.0, 0.3, 0.1};
 
-// Vertex spheres of radius 0.15, a contact distance of 0.2 to faces, and two walls at z = -+0.95
-// facing each other; on two shells the deformed state overlaps both the other shell and the walls.
-shell::ContactParameters contact_parameters() {
-  shell::ContactParameters p;
-  p.vertex_radius = 0.15;
-  p.contact_distance = 0.2;
-  p.youngs_modulus = 3.0;
-  p.poisson_ratio = 0.3;
-  p.wall_modulus = 10.0;
-  p.wall_poisson_ratio = 0.4;
-  p.walls = {shell::Plane{Eigen::Vector3d(0, 0, -0.95), Eigen::Vector3d::UnitZ()},
-             shell::Plane{Eigen::Vector3d(0, 0, 0.95), -Eigen::Vector3d::UnitZ()}};
-  return p;
-}
-
 // One perturbed sphere of radius 1, or two whose centres are 1.95 apart along x.
 mesh::TriMesh shell_rest(const std::string& variant, unsigned seed) {
-  const auto a = fx::perturbed_icosphere(3, 0.02, seed);
-  if (variant == "one-shell") return a;
-  const auto b = fx::perturbed_icosphere(3, 0.02, seed + 10);
-  mesh::TriMesh m;
-  m.V.resize(a.V.rows() + b.V.rows(), 3);
-  m.F.resize(a.F.rows() + b.F.rows(), 3);
-  m.V << a.V, b.V.rowwise() + Eigen::RowVector3d(1.95, 0, 0);
-  m.F << a.F, b.F.array() + static_cast<int>(a.V.rows());
-  return m;
+  return variant == "one-shell" ? fx::perturbed_icosphere(3, 0.02, seed) : fx::two_shells(seed);
 }
 
-// A deformed state: the rest mesh inflated by 8 % and jittered by 3 % of the radius.
-// "periodic": the two shells in a periodic box of side kPeriodicBox, their contact straddling
+// A deformed state (fx::deformed); "periodic": the two shells in a periodic box of side kPeriodicBox, their contact straddling
 // the x = 0 face (found only through the minimum image); "periodic-images": the second shell
 // then moved by box vectors (the same contacts, between other images).
 constexpr double kPeriodicBox = 6.0;
 std::vector<double> deformed(const mesh::TriMesh& rest, const std::string& variant, unsigned seed) {
-  auto x = fx::state(rest.V);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-0.03, 0.03);
-  for (double& v : x) v = 1.08 * v + u(rng);
+  auto x = fx::deformed(rest, seed);
   if (variant == "periodic" || variant == "periodic-images")
     x = fx::moved(x, Eigen::Matrix3d::Identity(), Eigen::Vector3d(-0.97, 1.0, 2.0));
   if (variant == "periodic-images")
@@ -180,7 +153,7 @@ const std::map<std::string, Kind>& kinds() {
         [](const mesh::TriMesh&, const std::string&, unsigned) { return shell::PressureParameters{2.5}; });
     k["shell-contact"] = shell_kind<decltype(shell::contact_styles()), shell::ContactParameters>(
         shell::contact_styles(), [](const mesh::TriMesh&, const std::string& variant, unsigned) {
-          auto p = contact_parameters();
+          auto p = fx::contact_parameters();
           if (variant == "periodic" || variant == "periodic-images") {
             p.walls.clear();
             p.box = Eigen::Vector3d::Constant(kPeriodicBox);

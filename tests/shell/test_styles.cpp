@@ -31,42 +31,11 @@ namespace {
 const MaterialParameters kMaterial{3.0, 0.3, 0.1};
 const PressureParameters kPressure{2.5};
 
-// Contacts: vertex spheres of radius 0.15, a contact distance of 0.2 to faces, and two walls at z = -+0.95 facing each other; on
-// two shells (below) the deformed state overlaps both the other shell and the walls.
-ContactParameters contact_parameters() {
-  ContactParameters p;
-  p.vertex_radius = 0.15;
-  p.contact_distance = 0.2;
-  p.youngs_modulus = 3.0;
-  p.poisson_ratio = 0.3;
-  p.wall_modulus = 10.0;
-  p.wall_poisson_ratio = 0.4;
-  p.walls = {Plane{Eigen::Vector3d(0, 0, -0.95), Eigen::Vector3d::UnitZ()},
-             Plane{Eigen::Vector3d(0, 0, 0.95), -Eigen::Vector3d::UnitZ()}};
-  return p;
-}
-
 cmp::mesh::TriMesh one_shell(unsigned seed) { return fx::perturbed_icosphere(3, 0.02, seed); }
 
-// Two perturbed spheres of radius 1 whose centres are 1.95 apart along x.
-cmp::mesh::TriMesh two_shells(unsigned seed) {
-  const auto a = fx::perturbed_icosphere(3, 0.02, seed), b = fx::perturbed_icosphere(3, 0.02, seed + 10);
-  cmp::mesh::TriMesh m;
-  m.V.resize(a.V.rows() + b.V.rows(), 3);
-  m.F.resize(a.F.rows() + b.F.rows(), 3);
-  m.V << a.V, b.V.rowwise() + Eigen::RowVector3d(1.95, 0, 0);
-  m.F << a.F, b.F.array() + static_cast<int>(a.V.rows());
-  return m;
-}
-
-// A deformed state: the rest mesh inflated by 8 % and jittered by 3 % of the radius.
-std::vector<double> deformed(const cmp::mesh::TriMesh& rest, unsigned seed) {
-  auto x = fx::state(rest.V);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-0.03, 0.03);
-  for (double& v : x) v = 1.08 * v + u(rng);
-  return x;
-}
+using fx::contact_parameters;
+using fx::deformed;
+using fx::two_shells;
 
 template <class Table, class Parameters>
 void check_table(Table table, const Parameters& params, bool zero_at_rest,
