@@ -28,8 +28,8 @@ namespace fx = cmp::shell::fixtures;
 
 namespace {
 
-const MaterialParameters kMaterial{3.0, 0.3, 0.1};
-const PressureParameters kPressure{2.5};
+const MaterialParameters kStyleMaterial{3.0, 0.3, 0.1};
+const PressureParameters kStylePressure{2.5};
 
 cmp::mesh::TriMesh one_shell(unsigned seed) { return fx::perturbed_icosphere(3, 0.02, seed); }
 
@@ -81,15 +81,15 @@ void check_table(Table table, const Parameters& params, bool zero_at_rest,
 }  // namespace
 
 TEST_CASE("every stretching style is invariant under rigid motions", "[shell][styles]") {
-  check_table(stretching_styles(), kMaterial, true);
+  check_table(stretching_styles(), kStyleMaterial, true);
 }
 
 TEST_CASE("every bending style is invariant under rigid motions", "[shell][styles]") {
-  check_table(bending_styles(), kMaterial, true);
+  check_table(bending_styles(), kStyleMaterial, true);
 }
 
 TEST_CASE("every pressure style is invariant under rigid motions", "[shell][styles]") {
-  check_table(pressure_styles(), kPressure, false);
+  check_table(pressure_styles(), kStylePressure, false);
 }
 
 TEST_CASE("every contact style is invariant under rigid motions", "[shell][styles]") {

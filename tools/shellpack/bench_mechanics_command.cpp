@@ -2,7 +2,7 @@
 
 #include "elasticity/benchmark_curves.hpp"
 #include "io/atomic_output.hpp"
-#include "shell/mechanics_benchmarks.hpp"
+#include "shellbench/mechanics_benchmarks.hpp"
 
 #include <iostream>
 
@@ -20,7 +20,7 @@ CLI::App* BenchMechanicsCommand::add(cli::Tool& tool, CLI::App& parent, cli::Com
 }
 
 void BenchMechanicsCommand::check(cli::Tool& tool) {
-  tool.collect("case", [&] { shell::check_mechanics_benchmark(case_); });
+  tool.collect("case", [&] { shellbench::check_mechanics_benchmark(case_); });
 }
 
 void BenchMechanicsCommand::run(bool quiet, const std::string& provenance) {
@@ -28,7 +28,7 @@ void BenchMechanicsCommand::run(bool quiet, const std::string& provenance) {
   if (analytic_)
     elasticity::write_csv(out.stream(), elasticity::analytic_curve(case_));
   else
-    shell::run_mechanics_benchmark(case_, !full_, out.stream(), provenance, [&](const std::string& note) {
+    shellbench::run_mechanics_benchmark(case_, !full_, out.stream(), provenance, [&](const std::string& note) {
       if (!quiet) std::cerr << "shellpack: " << note << "\n";
     });
   out.commit();

@@ -1,4 +1,4 @@
-#include "shell/sphere_inflation.hpp"
+#include "shellbench/sphere_inflation.hpp"
 
 #include "shell/shell_model.hpp"
 
@@ -7,7 +7,9 @@
 
 #include <cmath>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
+
+using namespace cmp::shell;
 
 std::vector<SphereInflationRow> sphere_inflation(const SphereInflationCase& c) {
   const auto rest = spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, c.level, c.radius);
@@ -40,4 +42,4 @@ std::vector<SphereInflationRow> sphere_inflation(const SphereInflationCase& c) {
   return rows;
 }
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

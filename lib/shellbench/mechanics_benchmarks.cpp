@@ -1,9 +1,9 @@
-#include "shell/mechanics_benchmarks.hpp"
+#include "shellbench/mechanics_benchmarks.hpp"
 
-#include "shell/buckling_run.hpp"
-#include "shell/flat_sheets.hpp"
-#include "shell/membrane_squeeze.hpp"
-#include "shell/sphere_inflation.hpp"
+#include "shellbench/buckling_run.hpp"
+#include "shellbench/flat_sheets.hpp"
+#include "shellbench/membrane_squeeze.hpp"
+#include "shellbench/sphere_inflation.hpp"
 
 #include "core/errors.hpp"
 #include "core/registry.hpp"
@@ -19,7 +19,9 @@
 
 #include <fmt/format.h>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
+
+using namespace cmp::shell;
 
 namespace {
 
@@ -311,4 +313,4 @@ void run_mechanics_benchmark(const std::string& name, bool quick, std::ostream& 
   find_style(kCases, name, "benchmark").run(quick, out, provenance, note);
 }
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

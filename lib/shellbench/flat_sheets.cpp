@@ -1,4 +1,4 @@
-#include "shell/flat_sheets.hpp"
+#include "shellbench/flat_sheets.hpp"
 
 #include "shell/dead_load.hpp"
 #include "shell/shell_model.hpp"
@@ -9,7 +9,9 @@
 
 #include <cmath>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
+
+using namespace cmp::shell;
 
 namespace {
 double mean_coordinate(const Eigen::VectorXd& x, const std::vector<int>& vs, int axis, double lo = -1e300,
@@ -119,4 +121,4 @@ std::vector<PlateResult> clamped_plate(const PlateCase& c, const std::vector<Pla
   return out;
 }
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

@@ -29,7 +29,7 @@
 #include <functional>
 #include <string>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
 
 struct BucklingCase {
   double gamma = 1e4;                 // Foppl-von Karman number Y R0^2/kappa
@@ -71,4 +71,4 @@ struct BucklingResult {
 BucklingResult buckling_run(const mesh::TriMesh& rest, const BucklingCase& c,
                             const std::function<void(const std::string&)>& note = {});
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
 
 struct PoissonRow {
   std::string model;
   double nu_input = 0, nu_measured = 0, strain_x = 0;
-  RelaxResult relax;
+  shell::RelaxResult relax;
 };
 // One row per (model, nu): the sheet of side `side` with about `vertices` vertices.
 std::vector<PoissonRow> poisson_ratios(const std::vector<std::string>& models, const std::vector<double>& nus,
@@ -34,7 +34,7 @@ struct PlateLoad {
 struct PlateCase {
   double radius = 2.25;                          // R0 [m]
   long vertices = 1200;                          // about this many
-  MaterialParameters material{25e6, 1.0 / 3.0, 0.1};
+  shell::MaterialParameters material{25e6, 1.0 / 3.0, 0.1};
   std::string stretching = "svk";
   std::string bending = "hinge-uniform";         // "" for a membrane
   double relative_tolerance = 1e-8;
@@ -44,10 +44,10 @@ struct PlateCase {
 struct PlateResult {
   std::vector<double> r, w;  // every free vertex: distance from the centre, deflection (>0 along the load)
   double w_max = 0;          // deflection of the centre vertex
-  RelaxResult relax;
+  shell::RelaxResult relax;
 };
 
 // Solves the loads in order, each from the previous state.
 std::vector<PlateResult> clamped_plate(const PlateCase& c, const std::vector<PlateLoad>& loads);
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

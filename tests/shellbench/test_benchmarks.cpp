@@ -1,8 +1,8 @@
 // The Appendix B benchmarks at test size (seconds): Poisson ratio (B.5.2), clamped plates
 // (B.5.3-B.5.4) and the inflated membrane between plates (B.6). Numbers measured at these
 // sizes are in the comments; the full figures come from `make shell-figures`.
-#include "shell/flat_sheets.hpp"
-#include "shell/membrane_squeeze.hpp"
+#include "shellbench/flat_sheets.hpp"
+#include "shellbench/membrane_squeeze.hpp"
 
 #include "elasticity/clamped_plate.hpp"
 
@@ -12,6 +12,7 @@
 #include <numbers>
 
 using namespace cmp::shell;
+using namespace cmp::shellbench;
 namespace el = cmp::elasticity;
 
 TEST_CASE("Poisson ratio: SVK reproduces the input nu, spring meshes give about 1/3 whatever the input",

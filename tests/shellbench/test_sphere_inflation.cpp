@@ -1,12 +1,13 @@
 // Benchmark B.5.1 at test size: the SVK membrane follows the corrected large-strain SVK sphere
 // relation up to dP/E = 1e-2; spring meshes agree only at small strain.
-#include "shell/sphere_inflation.hpp"
+#include "shellbench/sphere_inflation.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace cmp::shell;
+using namespace cmp::shellbench;
 
 TEST_CASE("an inflated SVK sphere follows the corrected large-strain relation, springs only at small strain",
           "[shell][physics][sphere]") {

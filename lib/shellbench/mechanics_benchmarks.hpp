@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
 
 // The case names, in the order above.
 std::vector<std::string> mechanics_benchmark_names();
@@ -26,4 +26,4 @@ void check_mechanics_benchmark(const std::string& name);
 void run_mechanics_benchmark(const std::string& name, bool quick, std::ostream& out, const std::string& provenance,
                              const std::function<void(const std::string&)>& note = {});
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

@@ -1,6 +1,6 @@
 // Buckling under external pressure (B.7, Fig. B.10) at test size: a 642-vertex shell, a few
 // seconds. Measured values in the comments (the full figure: `make shell-figures`).
-#include "shell/buckling_run.hpp"
+#include "shellbench/buckling_run.hpp"
 
 #include "core/errors.hpp"
 #include "spheremesh/annealing.hpp"
@@ -11,6 +11,7 @@
 
 using namespace cmp;
 using namespace cmp::shell;
+using namespace cmp::shellbench;
 
 namespace {
 

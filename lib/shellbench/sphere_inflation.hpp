@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
 
 struct SphereInflationCase {
   int level = 4;                 // icosahedral subdivision level (4: 642 vertices, as the thesis)
   double radius = 2.5;           // R0 [m]
-  MaterialParameters material{25e6, 1.0 / 3.0, 0.1};  // E [Pa], nu, t [m] (thesis B.5.1)
+  shell::MaterialParameters material{25e6, 1.0 / 3.0, 0.1};  // E [Pa], nu, t [m] (thesis B.5.1)
   std::vector<std::string> models{"svk", "springs-kot", "springs-van-gelder"};
   std::vector<double> loads{1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};  // dP/E
   double relative_tolerance = 1e-9;
@@ -27,9 +27,9 @@ struct SphereInflationRow {
   double strain_corrected = 0;  // the SVK sphere (corrected B.81)
   double strain_printed = 0;    // the printed B.82
   double strain_linear = 0;     // small strain: dP R0 (1 - nu)/(2 E t)
-  RelaxResult relax;
+  shell::RelaxResult relax;
 };
 
 std::vector<SphereInflationRow> sphere_inflation(const SphereInflationCase& c);
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

@@ -11,12 +11,12 @@
 
 #include <vector>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
 
 struct MembraneSqueezeCase {
   int level = 5;                  // icosahedral level (5: 2562 vertices)
   double radius = 1.0;            // R0
-  MaterialParameters material{1.0, 0.5, 0.04};  // E, nu, t (t/R0 = 0.04, nu = 0.5: Fig. B.9)
+  shell::MaterialParameters material{1.0, 0.5, 0.04};  // E, nu, t (t/R0 = 0.04, nu = 0.5: Fig. B.9)
   double inflation = 0.0025;      // P_i/E
   double vertex_radius = 0.01;    // R_v [length]
   std::vector<double> compressions{0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3};  // X, increasing
@@ -33,9 +33,9 @@ struct MembraneSqueezeRow {
   double pressure_theory = 0;    // P* of the shooting solution
   double contact_radius_theory = 0;  // r_c / R0
   double volume_error = 0;       // |V - V_i|/V_i of the mesh
-  RelaxResult relax;
+  shell::RelaxResult relax;
 };
 
 std::vector<MembraneSqueezeRow> membrane_squeeze(const MembraneSqueezeCase& c);
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

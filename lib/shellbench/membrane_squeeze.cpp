@@ -1,4 +1,4 @@
-#include "shell/membrane_squeeze.hpp"
+#include "shellbench/membrane_squeeze.hpp"
 
 #include "shell/shell_model.hpp"
 #include "shell/shell_run.hpp"
@@ -10,7 +10,9 @@
 #include <limits>
 #include <numbers>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
+
+using namespace cmp::shell;
 
 std::vector<MembraneSqueezeRow> membrane_squeeze(const MembraneSqueezeCase& c) {
   const auto rest = spheremesh::subdivided_sphere(spheremesh::Subdivision::Icosahedron, c.level, c.radius);
@@ -62,4 +64,4 @@ std::vector<MembraneSqueezeRow> membrane_squeeze(const MembraneSqueezeCase& c) {
   return rows;
 }
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench

@@ -1,4 +1,4 @@
-#include "shell/buckling_run.hpp"
+#include "shellbench/buckling_run.hpp"
 
 #include "shell/relax.hpp"
 #include "shell/shell_model.hpp"
@@ -11,7 +11,9 @@
 
 #include <fmt/format.h>
 
-namespace cmp::shell {
+namespace cmp::shellbench {
+
+using namespace cmp::shell;
 
 void BucklingCase::validate() const {
   auto require = [](bool ok, const char* what) {
@@ -122,4 +124,4 @@ BucklingResult buckling_run(const mesh::TriMesh& rest, const BucklingCase& c,
   return res;
 }
 
-}  // namespace cmp::shell
+}  // namespace cmp::shellbench
