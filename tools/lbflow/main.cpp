@@ -6,6 +6,7 @@
 //   lbflow --resume run.chk > flow.csv                                  continue after an interruption
 //   lbflow clusters/*.vtk --threads 2 > flows.csv                       many images, one row each
 //   lbflow jammed.xyz --delta 0.04 --scale 1.1 > flow.csv               the packing itself: exact walls
+#include "cli/checkpoint_args.hpp"
 #include "cli/seed_range.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
@@ -42,10 +43,9 @@ struct Options {
 };
 
 // The options that only steer this process (not the run): left out of a checkpoint's arguments.
-bool process_only(const std::string& a) {
-  return a == "--threads" || a == "-q" || a == "--quiet" || a == "--timings" || a == "--resume";
-}
-bool takes_value(const std::string& a) { return a == "--threads" || a == "--resume"; }
+// The options that steer only this process, left out of a checkpoint's arguments.
+constexpr cli::ProcessOnlyOption kProcessOnly[] = {
+    {"--threads", true}, {"--resume", true}, {"-q", false}, {"--quiet", false}, {"--timings", false}};
 
 void declare(cli::Tool& tool, Options& o) {
   auto& app = tool.app();
@@ -147,15 +147,7 @@ Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& ar
   }
   tool.check(o.vtk.empty() || names.size() == o.inputs.size(), "--vtk",
              "must tell the inputs apart with {name} when several are given, e.g. --vtk 'flow_{name}.vtk'");
-  // What a checkpoint records: every argument but those steering only this process.
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    if (process_only(args[k])) {
-      k += takes_value(args[k]);
-      continue;
-    }
-    if (args[k].starts_with("--threads=") || args[k].starts_with("--resume=")) continue;
-    p.run.checkpoint_args.push_back(args[k]);
-  }
+  p.run.checkpoint_args = cli::checkpoint_arguments(args, kProcessOnly);
   return p;
 }
 

@@ -2,19 +2,17 @@
 
 #include "shell/styles.hpp"
 
+#include "cli/checkpoint_args.hpp"
+
 #include <cmath>
 
 namespace cmp::shellpack {
 
 namespace {
 
-// The options that only steer this process, left out of a checkpoint's arguments
-// (with the value each takes).
-int process_only(const std::string& a) {
-  if (a == "--threads" || a == "--resume" || a == "--stop-after-steps") return 1;
-  if (a == "-q" || a == "--quiet") return 0;
-  return -1;
-}
+// The options that only steer this process, left out of a checkpoint's arguments.
+constexpr cli::ProcessOnlyOption kProcessOnly[] = {
+    {"--threads", true}, {"--resume", true}, {"--stop-after-steps", true}, {"-q", false}, {"--quiet", false}};
 
 }  // namespace
 
@@ -78,17 +76,8 @@ void CompressCommand::check(cli::Tool& tool) {
   job.check_penetration = !no_penetration_check;
   job.seed = common.seed;
   job.quiet = common.quiet;
-  // What a checkpoint records: the arguments after the subcommand but those steering only this process.
-  for (std::size_t k = 2; k < args.size(); ++k) {
-    if (const int takes = process_only(args[k]); takes >= 0) {
-      k += static_cast<std::size_t>(takes);
-      continue;
-    }
-    if (args[k].starts_with("--threads=") || args[k].starts_with("--resume=") ||
-        args[k].starts_with("--stop-after-steps="))
-      continue;
-    job.checkpoint_args.push_back(args[k]);
-  }
+  // What a checkpoint records: the arguments after the subcommand.
+  if (args.size() > 2) job.checkpoint_args = cli::checkpoint_arguments(std::span(args).subspan(2), kProcessOnly);
 }
 
 CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOptions& common) {
