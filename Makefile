@@ -115,7 +115,7 @@ run: deps configure
 # STUDY_DIR (out/study, out/study-<STUDY>) and its report.html. -j runs tasks in parallel.
 STUDY_TOOLS := rndmesh shellpack percolate lbflow kcfit
 STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
-.PHONY: study study-report study-jobs study-tools test-slurm
+.PHONY: study study-report study-docs study-jobs study-tools test-slurm
 study-tools: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS) >&2
 study: study-tools
@@ -123,6 +123,9 @@ study: study-tools
 # The report from whatever has finished (tables, fits, figures; the rest says what is missing).
 study-report: study-tools
 	+@$(STUDY_MAKE) report
+# The report, summary and figures copied into docs/study (docs/study-<STUDY>), for a commit.
+study-docs:
+	@$(STUDY_MAKE) docs
 # One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel
 # or a Slurm job array; run the stages in that order, each after the one before has finished.
 # (Standard output holds the commands only: the build above reports on standard error.)

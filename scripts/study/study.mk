@@ -66,7 +66,7 @@ $(call stamp,jam,'JAM_OPTS=$(JAM_OPTS)')
 .DELETE_ON_ERROR:
 .SECONDARY:
 .SECONDEXPANSION:
-.PHONY: all structure flow report jobs tools scripts
+.PHONY: all structure flow report docs jobs tools scripts
 
 all:
 	@scripts/study/check_tools.sh '$(RUN)'
@@ -159,6 +159,16 @@ report: | $(BIN)/kcfit
 	$(write_report)
 $(D)/report.html: $(ANALYSES) $(PERC_ROWS) $(FLOW_ROWS) $(D)/params/report.txt $(wildcard scripts/study/*.py) | $(BIN)/kcfit
 	$(write_report)
+
+# The finished report, its numbers beside the thesis's and its figures copied into the
+# documentation, the files a commit keeps (make study-docs): docs/study for the default
+# campaign, docs/study-<STUDY> for another preset.
+DOCS_DIR ?= docs/study$(if $(filter default,$(STUDY)),,-$(STUDY))
+docs:
+	@test -f $(D)/report.html || { echo "study: no report in $(D): run make study first" >&2; exit 2; }
+	@rm -rf $(DOCS_DIR) && mkdir -p $(DOCS_DIR)/figures
+	cp $(D)/report.html $(D)/summary.md $(DOCS_DIR)/
+	cp $(D)/figures/*.png $(DOCS_DIR)/figures/
 
 # One stage's commands, one a line, for GNU parallel or a job array (make study-jobs STAGE=...):
 # the recipes of the stage's unfinished targets, printed instead of run. A stage's jobs need the
