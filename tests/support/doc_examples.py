@@ -167,7 +167,7 @@ class Runner:
             dry = "test" in targets or (self.size == "small" and
                                         any(t in DRY_MAKE_SMALL for t in targets))
             if any(t.startswith("study") for t in targets):
-                extra += [f"STUDY_DIR={self.scratch}/study", "THREADS=1"]
+                extra += [f"STUDY_DIR={self.scratch}/study", f"DOCS_DIR={self.scratch}/docs", "THREADS=1"]
                 if self.size == "small":
                     words = [w for w in words if w.split("=")[0] not in STUDY_SIZE_VARIABLES]
                     extra.append("STUDY=tiny")
