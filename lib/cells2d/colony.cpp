@@ -42,7 +42,7 @@ Colony::Colony(const GrowthParameters& parameters, std::uint64_t seed) : params_
 
 Colony::Colony(const Colony& o)
     : params_(o.params_), rng_(o.rng_), cells_(o.cells_),
-      engine_(std::make_unique<ContactEngine>(o.engine_->domain(), o.engine_->law())), time_(o.time_),
+      engine_(std::make_unique<ContactEngine>(o.engine_->domain(), o.engine_->law(), o.engine_->law_parameters())), time_(o.time_),
       jammed_(o.jammed_), phi_jamming_(o.phi_jamming_), counters_(o.counters_) {}
 
 void Colony::update_rates() {

@@ -2,8 +2,15 @@
 
 namespace cmp::cells2d {
 
-ContactField::ContactField(std::vector<Cell> cells, const Domain& domain, const ContactLawStyle& law)
-    : cells_(std::move(cells)), engine_(domain, law), force_(3 * cells_.size()) {}
+ContactField::ContactField(std::vector<Cell> cells, const Domain& domain, const ContactLawStyle& law,
+                           const LawParameters& parameters)
+    : cells_(std::move(cells)), engine_(domain, law, parameters), force_(3 * cells_.size()) {}
+
+ContactField::ContactField(std::vector<Cell> cells, const ChamberGeometry& chamber, const ContactLawStyle& law,
+                           const LawParameters& parameters)
+    : ContactField(std::move(cells), chamber.domain(), law, parameters) {
+  walls_ = std::make_unique<ChamberWalls>(chamber, law);
+}
 
 std::vector<double> ContactField::state() const {
   std::vector<double> x;
@@ -22,13 +29,14 @@ void ContactField::place(std::span<const double> x) const {
 double ContactField::energy(std::span<const double> x) const {
   check_sizes(x);
   place(x);
-  return engine_.energy(cells_);
+  return engine_.energy(cells_) + (walls_ ? walls_->energy(cells_) : 0.0);
 }
 
 void ContactField::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   place(x);
   engine_.evaluate(cells_, force_.data());
+  if (walls_) walls_->add_forces(cells_, force_.data());
   for (std::size_t k = 0; k < g.size(); ++k) g[k] -= force_[k];
 }
 

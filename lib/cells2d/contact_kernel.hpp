@@ -19,6 +19,8 @@ double ContactEngine::evaluate_with(const std::vector<Cell>& cells, double* forc
   std::fill(force, force + 3 * cells.size(), 0.0);
   const double* p = lobes_.data();  // row-major: lobe l at p[3 l], p[3 l + 1]
   double energy = 0;
+  const LawParameters& law = parameters_;
+  const double range = range_;
   for (int i = 0; i < lobes; ++i) {
     const int ci = i >> 1;
     const double xi = p[3 * i], yi = p[3 * i + 1], ri = radius_[i];
@@ -26,11 +28,11 @@ double ContactEngine::evaluate_with(const std::vector<Cell>& cells, double* forc
     for (int j : list_.neighbours_of(i)) {
       if (j <= i || (j >> 1) == ci) continue;
       const Eigen::Vector2d d = domain_.separation(Eigen::Vector2d(xi - p[3 * j], yi - p[3 * j + 1]));
-      const double reach = ri + radius_[j], r2 = d[0] * d[0] + d[1] * d[1];
+      const double contact = ri + radius_[j], reach = contact + range, r2 = d[0] * d[0] + d[1] * d[1];
       if (r2 >= reach * reach || r2 == 0) continue;
-      const double r = std::sqrt(r2), overlap = reach - r;
-      energy += Law::energy(overlap);
-      const double s = Law::force(overlap) / r, gx = s * d[0], gy = s * d[1];  // force on lobe i
+      const double r = std::sqrt(r2), overlap = contact - r;
+      energy += Law::energy(overlap, law);
+      const double s = Law::force(overlap, law) / r, gx = s * d[0], gy = s * d[1];  // force on lobe i
       fx += gx, fy += gy;
       torque += offset_x_[i] * gy - offset_y_[i] * gx;
       const int cj = j >> 1;

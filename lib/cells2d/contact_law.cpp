@@ -3,6 +3,7 @@
 #include "cells2d/contact_kernel.hpp"
 #include "cells2d/harmonic_law.hpp"
 #include "cells2d/hertz_law.hpp"
+#include "cells2d/sticky_law.hpp"
 
 #include "core/registry.hpp"
 
@@ -11,7 +12,7 @@ namespace cmp::cells2d {
 namespace {
 template <class Law>
 ContactLawStyle style() {
-  return {Law::name, Law::description, &Law::energy, &Law::force, &ContactEngine::kernel<Law>};
+  return {Law::name, Law::description, &Law::energy, &Law::force, &Law::range, &ContactEngine::kernel<Law>};
 }
 }  // namespace
 
@@ -19,6 +20,7 @@ const std::vector<ContactLawStyle>& contact_laws() {
   static const std::vector<ContactLawStyle> table = {
       style<HarmonicLaw>(),
       style<HertzLaw>(),
+      style<StickyLaw>(),
   };
   return table;
 }

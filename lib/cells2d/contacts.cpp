@@ -3,13 +3,15 @@
 #include "core/errors.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <omp.h>
 
 namespace cmp::cells2d {
 
 namespace {
-// The largest lobe-lobe reach (two mothers) plus room for a Lees-Edwards strain of ~1e-3.
+// The largest lobe-lobe reach (two mothers) plus room for a Lees-Edwards strain of ~1e-3; an
+// attractive law adds its range.
 constexpr double kCutoff = 1.0 + 1e-3;
 constexpr std::size_t kSerialBuildCells = 20000;
 
@@ -19,8 +21,12 @@ neighbours::Box planar_box(const Domain& d) {
 }
 }  // namespace
 
-ContactEngine::ContactEngine(const Domain& domain, const ContactLawStyle& law, double skin)
-    : domain_(domain), law_(&law), list_(planar_box(domain), kCutoff, skin) {}
+ContactEngine::ContactEngine(const Domain& domain, const ContactLawStyle& law, const LawParameters& parameters,
+                             double skin)
+    : domain_(domain), law_(&law), parameters_(parameters), range_(law.range(parameters)),
+      list_(planar_box(domain), kCutoff + range_, skin) {
+  if (!(range_ >= 0) || !std::isfinite(range_)) throw UsageError("cells2d: a contact law's range must be finite and >= 0");
+}
 
 void ContactEngine::place_lobes(const std::vector<Cell>& cells) {
   const std::size_t n = cells.size();
@@ -60,7 +66,7 @@ double ContactEngine::evaluate(const std::vector<Cell>& cells, double* force) {
 
 double ContactEngine::energy(const std::vector<Cell>& cells) {
   double e = 0;
-  for_each_contact(cells, [&](const Contact& c) { e += law_->energy(c.overlap); });
+  for_each_contact(cells, [&](const Contact& c) { e += pair_energy(c.overlap); });
   return e;
 }
 

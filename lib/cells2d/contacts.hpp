@@ -42,23 +42,28 @@ struct Domain {
   }
 };
 
-// One overlapping lobe pair: lobes a < b (lobe 2i mother, 2i + 1 bud of cell i).
+// One interacting lobe pair: lobes a < b (lobe 2i mother, 2i + 1 bud of cell i).
 struct Contact {
   int a, b;
   Eigen::Vector2d d;  // centre of a minus centre of b (nearest image) [sigma]
   double distance;    // |d| [sigma]
-  double overlap;     // delta > 0 [sigma]
-  double force;       // repulsive force magnitude [k sigma]; on a it is force * d / distance
+  double overlap;     // delta [sigma]: > 0 for touching lobes, in (-range, 0] within an attractive law's reach
+  double force;       // dV/d delta [k sigma], > 0 repulsive; on a it is force * d / distance
 };
 
 class ContactEngine {
  public:
   // Throws cmp::UsageError when the box is smaller than 2 (cutoff + skin) along a periodic
   // axis or not positive. skin [sigma]: the Verlet list's margin.
-  ContactEngine(const Domain& domain, const ContactLawStyle& law, double skin = 0.3);
+  ContactEngine(const Domain& domain, const ContactLawStyle& law, const LawParameters& parameters = {},
+                double skin = 0.3);
 
   const Domain& domain() const { return domain_; }
   const ContactLawStyle& law() const { return *law_; }
+  const LawParameters& law_parameters() const { return parameters_; }
+  // The law's energy and force of an overlap, with this engine's parameters.
+  double pair_energy(double overlap) const { return law_->energy(overlap, parameters_); }
+  double pair_force(double overlap) const { return law_->force(overlap, parameters_); }
   // Changes the Lees-Edwards strain (by at most ~1e-3: the list keeps a margin for it).
   void set_shear(double strain) { domain_.shear = strain; }
 
@@ -68,11 +73,22 @@ class ContactEngine {
   // Energy alone [k sigma^2].
   double energy(const std::vector<Cell>& cells);
 
-  // Calls f(const Contact&) for every overlapping pair of lobes of different cells, once.
+  // Calls f(const Contact&) for every interacting pair of lobes of different cells, once: the
+  // overlapping ones, and for an attractive law those within its range.
   template <class F>
   void for_each_contact(const std::vector<Cell>& cells, F&& f);
 
   long list_builds() const { return list_.builds(); }
+
+  // The lobes as last placed by evaluate, energy or for_each_contact: how many, their centres,
+  // radii and offsets from their cell's centre of mass (what walls need, without recomputing the
+  // cells' orientations).
+  int lobe_count() const { return static_cast<int>(radius_.size()); }
+  Eigen::Vector2d lobe_position(int l) const { return {lobes_(l, 0), lobes_(l, 1)}; }
+  double lobe_radius(int l) const { return radius_[static_cast<std::size_t>(l)]; }
+  Eigen::Vector2d lobe_offset(int l) const {
+    return {offset_x_[static_cast<std::size_t>(l)], offset_y_[static_cast<std::size_t>(l)]};
+  }
 
   // The force loop for one law (contact_kernel.hpp; a registered law points at it).
   template <class Law>
@@ -86,6 +102,8 @@ class ContactEngine {
 
   Domain domain_;
   const ContactLawStyle* law_;
+  LawParameters parameters_;
+  double range_;  // law_->range(parameters_)
   neighbours::NeighbourList list_;
   mesh::VertexMatrix lobes_;            // 2N by 3 (z = 0)
   std::vector<double> radius_;          // 2N lobe radii
@@ -103,10 +121,10 @@ void ContactEngine::for_each_contact(const std::vector<Cell>& cells, F&& f) {
     for (int j : list_.neighbours_of(i)) {
       if (j <= i || (j >> 1) == (i >> 1)) continue;
       const Eigen::Vector2d d = domain_.separation(pi - Eigen::Vector2d(lobes_(j, 0), lobes_(j, 1)));
-      const double reach = radius_[i] + radius_[j], r2 = d.squaredNorm();
+      const double contact = radius_[i] + radius_[j], reach = contact + range_, r2 = d.squaredNorm();
       if (r2 >= reach * reach || r2 == 0) continue;
-      const double r = std::sqrt(r2), overlap = reach - r;
-      f(Contact{i, j, d, r, overlap, law_->force(overlap)});
+      const double r = std::sqrt(r2), overlap = contact - r;
+      f(Contact{i, j, d, r, overlap, pair_force(overlap)});
     }
   }
 }

@@ -5,7 +5,8 @@
 
 namespace cmp::cells2d {
 
-void divide_cell(const Cell& parent, double area, Random& rng, double rate_spread, Cell& first, Cell& second) {
+void divide_cell(const Cell& parent, double area, Random& rng, double rate_spread, Cell& first, Cell& second,
+                 bool keep_orientation) {
   // At division the bud equals the mother: the lobe centres are the centre of mass +- e/2.
   const double ex = std::cos(parent.theta), ey = std::sin(parent.theta);
   const double bud = bud_for_area(0.5 * area);  // each daughter: half of the area
@@ -13,7 +14,7 @@ void divide_cell(const Cell& parent, double area, Random& rng, double rate_sprea
   for (int k = 0; k < 2; ++k) {
     Cell& d = *daughters[k];
     const double s = k == 0 ? 0.5 : -0.5;
-    d.theta = rng.uniform(0, 2 * std::numbers::pi);
+    d.theta = keep_orientation ? parent.theta : rng.uniform(0, 2 * std::numbers::pi);
     d.bud = bud;
     d.rate0 = d.rate = draw_rate(rng, rate_spread);
     // The daughter's mother sits where the parent's lobe was: its centre of mass is shifted

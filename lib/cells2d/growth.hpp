@@ -22,7 +22,10 @@ inline double draw_rate(Random& rng, double spread) { return rng.uniform(1 - spr
 // divisions.
 int grow_cells(std::vector<Cell>& cells, double dt, Random& rng, double rate_spread);
 
-// The two cells a dividing cell becomes (exposed for tests): area = its area, >= pi/2.
-void divide_cell(const Cell& parent, double area, Random& rng, double rate_spread, Cell& first, Cell& second);
+// The two cells a dividing cell becomes (exposed for tests): area = its area, >= pi/2. With
+// keep_orientation both keep the parent's orientation (the chamber of Chapter 2) instead of
+// drawing new ones (the periodic box of Chapter 3).
+void divide_cell(const Cell& parent, double area, Random& rng, double rate_spread, Cell& first, Cell& second,
+                 bool keep_orientation = false);
 
 }  // namespace cmp::cells2d

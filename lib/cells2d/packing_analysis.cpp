@@ -12,6 +12,7 @@ double PackingAnalysis::lobe_pressure(const std::vector<Cell>& cells, int lobe) 
 std::vector<double> bud_pressures(const std::vector<Cell>& cells, ContactEngine& engine) {
   std::vector<double> force(cells.size(), 0.0);
   engine.for_each_contact(cells, [&](const Contact& c) {
+    if (c.overlap <= 0) return;  // within an attractive law's reach, not touching
     if (c.a & 1) force[static_cast<std::size_t>(c.a >> 1)] += c.force;
     if (c.b & 1) force[static_cast<std::size_t>(c.b >> 1)] += c.force;
   });
@@ -30,7 +31,8 @@ PackingAnalysis analyse_packing(const std::vector<Cell>& cells, ContactEngine& e
   a.lobe_force.assign(2 * n, 0.0);
   std::vector<std::pair<int, int>> pairs;
   engine.for_each_contact(cells, [&](const Contact& c) {
-    a.energy += engine.law().energy(c.overlap);
+    a.energy += engine.pair_energy(c.overlap);
+    if (c.overlap <= 0) return;  // within an attractive law's reach, not touching
     const Eigen::Vector2d f = c.force / c.distance * c.d;
     a.pressure_tensor += c.d * f.transpose();
     ++a.lobe_contacts[static_cast<std::size_t>(c.a)], ++a.lobe_contacts[static_cast<std::size_t>(c.b)];

@@ -45,7 +45,7 @@ TEST_CASE("cells2d harness: contacts across the periodic boundary are found and 
     const double ea = engine.energy(across), ei = engine.energy(inside);
     CHECK(ea > 0);
     CHECK(ea == Approx(ei).epsilon(1e-12));
-    CHECK(ea == Approx(law.energy(0.1)).epsilon(1e-9));
+    CHECK(ea == Approx(law.energy(0.1, {})).epsilon(1e-9));
     int n = 0;
     engine.for_each_contact(across, [&](const Contact& c) {
       ++n;

@@ -134,7 +134,37 @@ Kind cells2d_kind() {
               c.theta = rng.uniform(-4, 4);
               c.bud = rng.uniform() < 0.15 ? 0.0 : rng.uniform(0, 1);
             }
-            auto field = std::make_unique<cells2d::ContactField>(cells, box, cells2d::contact_law(style));
+            // An attractive range that the sticky law uses (and the others ignore).
+            auto field = std::make_unique<cells2d::ContactField>(cells, box, cells2d::contact_law(style),
+                                                                 cells2d::LawParameters{0.15});
+            auto x = field->state();
+            return Fixture{std::move(field), x};
+          }};
+}
+
+// Cells in the chamber of Chapter 2: contacts and walls. `walls` presses cells against the four
+// walls and into the corners; `outlet` crowds the outlet's edges and the channel, its walls and
+// its open end.
+Kind chamber_kind() {
+  return {names_of(cells2d::contact_laws()), [](const std::string& style, const std::string& variant, unsigned seed) {
+            if (variant != "walls" && variant != "outlet") throw std::invalid_argument("no chamber variant " + variant);
+            Random rng(29, seed);
+            cells2d::ChamberGeometry g;
+            g.width = 4, g.height = 5, g.outlet = 1.6, g.channel = 1.5;
+            std::vector<cells2d::Cell> cells(18);
+            for (cells2d::Cell& c : cells) {
+              if (variant == "walls") {
+                c.x = rng.uniform() < 0.5 ? rng.uniform(-0.2, 0.6) : rng.uniform(g.width - 0.6, g.width + 0.2);
+                c.y = rng.uniform() < 0.5 ? rng.uniform(-0.2, 0.6) : rng.uniform(0, g.height + 0.2);
+              } else {
+                c.x = rng.uniform(g.outlet_left() - 0.6, g.outlet_right() + 0.6);
+                c.y = rng.uniform(-g.channel - 0.6, 0.7);
+              }
+              c.theta = rng.uniform(-4, 4);
+              c.bud = rng.uniform() < 0.15 ? 0.0 : rng.uniform(0, 1);
+            }
+            auto field = std::make_unique<cells2d::ContactField>(cells, g, cells2d::contact_law(style),
+                                                                 cells2d::LawParameters{0.1});
             auto x = field->state();
             return Fixture{std::move(field), x};
           }};
@@ -170,6 +200,7 @@ const std::map<std::string, Kind>& kinds() {
         });
     k["spheres-contact"] = spheres_kind();
     k["cells2d-contact"] = cells2d_kind();
+    k["cells2d-chamber"] = chamber_kind();
     return k;
   }();
   return all;

@@ -25,7 +25,7 @@ XYZ
 
 case_help() {
   "$jam2d" --help >help.txt || fail "--help"
-  for sub in grow moduli sweep; do grep -q "$sub" help.txt || fail "--help lacks $sub"; done
+  for sub in grow moduli sweep chamber; do grep -q "$sub" help.txt || fail "--help lacks $sub"; done
   "$jam2d" grow --help >grow.txt || fail "grow --help"
   for opt in --box --seed --dphi --P0 --packing --csv --trajectory --every --contact --dt0 --fixed-step; do
     grep -q -- "$opt" grow.txt || fail "grow --help lacks $opt"
@@ -117,6 +117,39 @@ case_bad_box_option() {
 case_bad_P0() {
   expect_error 2 "--P0: P0 must be positive (inf for no feedback), got '0'" "$jam2d" grow --box 4 --P0 0 -o out.xyz --csv out.csv
   expect_error 2 "--P0: P0 must be positive" "$jam2d" sweep --box 4 --seeds 1:2 --P0 inf,-0.1 -o out.csv
+}
+case_chamber_writes_series_and_frames() {
+  "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 3 --every 0.5 --frame-every 1 --seed 2 -q \
+    -o run.xyz >series.csv || fail "chamber"
+  grep -q "^time,steps,cells,chamber_cells,left,pressure_walls,pressure_virial,growth_rate,c_P,energy,max_force$" series.csv ||
+    fail "chamber columns"
+  [ "$(grep -vc '^#' series.csv)" = 8 ] || fail "7 rows (t = 0, 0.5, ..., 3) and the header"
+  grep -q "^# mobility=2000$" series.csv || fail "parameters in the meta lines"
+  /usr/bin/python3 - <<'PY' || fail "ASE reads the chamber's frames"
+import ase.io
+frames = ase.io.read("run.xyz", index=":")
+assert len(frames) == 4, len(frames)  # t = 0, 1, 2, 3
+a = frames[-1]
+assert list(a.pbc) == [False, False, False], a.pbc
+assert abs(a.cell[0][0] - 4) < 1e-12 and abs(a.cell[1][1] - 7) < 1e-12  # width, height + channel
+for column in ("radius", "cell", "lobe", "orientation", "force", "pressure", "contacts"):
+    assert column in a.arrays, column
+assert len(a) == 2 * (max(a.arrays["cell"]) + 1)
+assert len(frames[-1]) > len(frames[0])
+PY
+  # Same seed, same bytes (the provenance line aside).
+  "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 3 --every 0.5 --seed 2 -q >again.csv || fail "again"
+  cmp <(grep -v provenance series.csv) <(grep -v provenance again.csv) || fail "same seed, other bytes"
+}
+case_chamber_bad_options_all_at_once() {
+  "$jam2d" chamber --width 4 --outlet 5 --mobility -1 --csv out.csv 2>stderr.txt
+  [ $? = 2 ] || fail "two bad options: exit status"
+  grep -q "^jam2d: --outlet: must be narrower than the chamber's wall (--width)$" stderr.txt || fail "--outlet"
+  grep -q "^jam2d: --mobility: must be positive$" stderr.txt || fail "--mobility, in the same run"
+  expect_error 2 "--height: must be at least 1 sigma" "$jam2d" chamber --height 0 --csv out.csv
+  expect_error 2 "--dt: must be at most 0.546 / mobility" "$jam2d" chamber --dt 1e-3 --csv out.csv
+  expect_error 2 "--integrator: unknown integrator 'rk4'" "$jam2d" chamber --integrator rk4 --csv out.csv
+  [ ! -e out.csv ] || fail "a refused run wrote out.csv"
 }
 case_unknown_option() {
   expect_error 2 "--frobnicate" "$jam2d" grow --box 4 --frobnicate -o out.xyz --csv out.csv

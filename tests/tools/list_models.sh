@@ -32,7 +32,7 @@ case_shellpack() {
 case_jam2d() {
   "$bin/jam2d" --list-models >list.csv || fail "jam2d --list-models"
   check_listing list.csv contact harmonic hertz
-  cli_tool=jam2d expect_error 2 "--contact: unknown contact law 'lj' (known: harmonic, hertz)" "$bin/jam2d" grow --box 4 --contact lj -o out.xyz --csv out.csv
+  cli_tool=jam2d expect_error 2 "--contact: unknown contact law 'lj' (known: harmonic, hertz, sticky)" "$bin/jam2d" grow --box 4 --contact lj -o out.xyz --csv out.csv
   cli_tool=jam2d expect_error 2 "a subcommand is required" "$bin/jam2d"
 }
 case_lbflow() {

@@ -1,8 +1,10 @@
-// jam2d: budding cells in 2D (thesis Chapter 3; the chamber of Chapter 2 is to come).
+// jam2d: budding cells in 2D (thesis Chapters 2 and 3).
 //   jam2d grow --box 15 --seed 1 -o jammed.xyz > growth.csv          from two cells until jammed
 //   jam2d grow --box 15 --seed 1 --dphi 0.05 --P0 0.001 -o pack.xyz  beyond jamming, with feedback
 //   jam2d moduli pack.xyz > moduli.csv                               P, B, G, Z, f_u of static packings
 //   jam2d sweep --box 10 --seeds 1:100 --dphi 0:0.1:0.01 --P0 inf,0.005,0.001 > sweep.csv
+//   jam2d chamber --width 6 --height 16 --outlet 1.4 --seed 1 --time 200 -o run.xyz > pressure.csv
+#include "cells2d/chamber_output.hpp"
 #include "cells2d/packing_xyz.hpp"
 #include "cells2d/tables.hpp"
 #include "cli/progress.hpp"
@@ -37,6 +39,8 @@ struct Options {
   std::vector<std::string> inputs;
   std::string output = "-";
   std::vector<double> dphis, P0s;
+  ChamberParameters chamber;
+  double duration = 100, sample_every = 0.01, frame_every = 1;
 };
 
 void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
@@ -177,6 +181,70 @@ void run_sweep(const Options& o, const std::vector<std::uint64_t>& seeds, const 
   out.commit();
 }
 
+void add_chamber_options(cli::Tool& tool, CLI::App& sub, Options& o) {
+  ChamberParameters& c = o.chamber;
+  tool.add_double(sub, "--width", c.geometry.width, "chamber width L_x [sigma]");
+  tool.add_double(sub, "--height", c.geometry.height, "chamber height L_y [sigma]");
+  tool.add_double(sub, "--outlet", c.geometry.outlet, "outlet width a, centred in the bottom wall [sigma]");
+  tool.add_double(sub, "--channel", c.geometry.channel, "length of the outlet channel; cells past it are removed [sigma]");
+  sub.add_option("--contact", c.contact, "contact law between lobes: " + style_names(contact_laws()) + " (--list-models)")
+      ->capture_default_str();
+  tool.add_double(sub, "--attraction", c.attraction, "width Delta of the sticky law's attractive range [sigma]");
+  tool.add_double(sub, "--mobility", c.mobility, "mobility mu k / gamma0 (thesis: 8e4 without feedback, 2e3 with)");
+  tool.add_double(sub, "--dt", c.dt, "time step [1/gamma0]; 0: the integrator's stability limit / (20 mobility)");
+  sub.add_option("--integrator", c.integrator, "integrator: " + style_names(integrator_styles()))->capture_default_str();
+  tool.add_double(sub, "--rate-spread", c.rate_spread, "gamma0_i uniform in [1 - s, 1 + s] gamma0");
+  sub.add_option("--P0", o.P0_text, "feedback pressure P0 [k] ('inf': none)")->capture_default_str();
+  sub.add_option("--feedback-pressure", c.feedback_pressure, "the pressure that slows a cell: cell or bud")
+      ->capture_default_str();
+  tool.add_double(sub, "--feedback-interval", c.feedback_interval, "time between growth-rate updates [1/gamma0]");
+  tool.add_double(sub, "--time", o.duration, "simulated time [1/gamma0]", cli::positive());
+  tool.add_double(sub, "--every", o.sample_every, "time between rows of the time series [1/gamma0]", cli::positive());
+  tool.add_double(sub, "--frame-every", o.frame_every, "time between trajectory frames [1/gamma0]", cli::positive());
+  tool.add_output(sub, "-o,--trajectory", o.trajectory_output, "extended XYZ frames of the chamber ('-': stdout)");
+  tool.add_output(sub, "--csv", o.csv_output, "time series, one row per --every ('-': stdout)");
+  tool.add_common(sub, o.common, cli::Tool::kSeed | cli::Tool::kQuiet);
+}
+
+void run_chamber(const Options& o, const std::string& provenance) {
+  std::unique_ptr<io::AtomicOutput> csv, trajectory;
+  if (!o.csv_output.empty()) csv = std::make_unique<io::AtomicOutput>(o.csv_output);
+  if (!o.trajectory_output.empty()) trajectory = std::make_unique<io::AtomicOutput>(o.trajectory_output);
+  const ChamberParameters& p = o.chamber;
+  ChamberRun run(p, o.common.seed);
+  std::unique_ptr<io::CsvWriter> table;
+  if (csv) {
+    table = std::make_unique<io::CsvWriter>(csv->stream());
+    table->allow_infinity();  // P0 = inf: no feedback
+    table->meta("provenance", provenance);
+    table->meta("units", kUnits);
+    for (const auto& [k, v] : chamber_info(p, o.common.seed)) table->meta(k, v);
+    table->header(chamber_columns());
+  }
+  std::unique_ptr<io::XyzWriter> frames;
+  if (trajectory) frames = std::make_unique<io::XyzWriter>(trajectory->stream());
+  auto info = chamber_info(p, o.common.seed);
+  info.insert(info.begin(), {"tool", provenance});
+  cli::ProgressBar bar("chamber", o.duration, o.common.quiet);
+  const long samples = std::lround(o.duration / o.sample_every);
+  const long frame_stride = std::max(1L, std::lround(o.frame_every / o.sample_every));
+  for (long k = 0; k <= samples; ++k) {
+    run.advance_to(static_cast<double>(k) * o.sample_every);
+    ChamberSample s = run.sample();
+    s.time = static_cast<double>(k) * o.sample_every;  // the scheduled time, to within a step
+    if (table) table->row(chamber_row(s));
+    if (frames && k % frame_stride == 0) frames->write(chamber_frame(run, info));
+    bar.set_note(fmt::format("{} cells, P {:.3f} k, {} left", s.chamber_cells, s.pressure_walls, s.left));
+    bar.update(run.time());
+  }
+  bar.finish();
+  io::commit_in_order({trajectory.get(), csv.get()});
+  if (!o.common.quiet)
+    std::cerr << fmt::format("jam2d: t = {}/gamma0 in {} steps (dt {}); {} cells in the chamber, {} divisions, {} left; {} evaluations, {} neighbour-list builds\n",
+                             io::format_number(run.time()), run.steps(), io::format_number(p.time_step()),
+                             run.cells().size(), run.divisions(), run.left(), run.evaluations(), run.list_builds());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -213,13 +281,18 @@ int main(int argc, char** argv) {
     tool.add_output(*sweep, "-o,--output", o.output, "CSV ('-': stdout)");
     tool.add_common(*sweep, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 
+    auto* chamber = app->add_subcommand("chamber", "cells proliferating in a chamber with an outlet (thesis Ch. 2); "
+                                                   "CSV row per --every");
+    add_chamber_options(tool, *chamber, o);
+
     tool.parse(argc, argv);
     if (o.list_models) {
       write_style_header(std::cout);
       write_styles(std::cout, "contact", contact_laws());
+      write_styles(std::cout, "integrator", integrator_styles());
       return 0;
     }
-    tool.check(app->get_subcommands().size() == 1, "", "a subcommand is required: grow, moduli or sweep (or --list-models)");
+    tool.check(app->get_subcommands().size() == 1, "", "a subcommand is required: grow, moduli, sweep or chamber (or --list-models)");
     std::vector<std::uint64_t> seeds;
     if (grow->parsed()) {
       check_growth(tool, o);
@@ -237,12 +310,21 @@ int main(int argc, char** argv) {
       seeds = tool.seed_list(o.seeding);
       tool.check(!o.seeding.resume, "--resume", "sweep writes one table; run the missing seeds and join the tables");
     }
+    if (chamber->parsed()) {
+      tool.collect("--P0", [&] { o.chamber.P0 = parse_feedback(o.P0_text); });
+      for (const auto& [flag, message] : o.chamber.problems()) tool.check(false, flag, message);
+      tool.check(o.sample_every <= o.duration, "--every", "must not exceed --time");
+      tool.check(o.duration / o.sample_every <= 1e8, "--every", "more than 1e8 rows: choose a larger --every");
+      const int to_stdout = (o.csv_output == "-") + (o.trajectory_output == "-");
+      tool.check(to_stdout <= 1, "", "--csv and -o: at most one of them may be '-' (stdout)");
+    }
     tool.finish_checks();
     cli::apply_threads(o.common);
     const std::string provenance = cli::provenance("jam2d", argc, argv);
     if (grow->parsed()) run_grow(o, provenance);
     if (moduli->parsed()) run_moduli(o, provenance);
     if (sweep->parsed()) run_sweep(o, seeds, provenance);
+    if (chamber->parsed()) run_chamber(o, provenance);
     return 0;
   });
 }
