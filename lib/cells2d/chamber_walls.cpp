@@ -16,7 +16,10 @@ std::vector<std::pair<std::string, std::string>> ChamberGeometry::problems() con
   require(std::isfinite(width) && width >= 1, "--width", "must be at least 1 sigma (a cell's diameter)");
   require(std::isfinite(height) && height >= 1, "--height", "must be at least 1 sigma (a cell's diameter)");
   require(std::isfinite(outlet) && outlet > 0, "--outlet", "must be positive");
-  require(!(outlet >= width), "--outlet", "must be narrower than the chamber's wall (--width)");
+  if (outlet >= width)
+    require(false, "--outlet", "must be narrower than the chamber's wall (--width)");
+  else  // the side walls' planes, continued past the corners, must stay a radius from the channel
+    require(!(width - outlet < 1), "--outlet", "must leave at least sigma/2 of wall on each side (at most --width - 1)");
   require(std::isfinite(channel) && channel > 0, "--channel", "must be positive");
   require(!(width * height > 1e6), "--width", "times --height must be at most 1e6 sigma^2 (a chamber holds of the order of its area in cells)");
   return out;
@@ -36,22 +39,23 @@ bool ChamberGeometry::contains(double x, double y, double margin) const {
 ChamberWalls::ChamberWalls(const ChamberGeometry& g, const ContactLawStyle& law) : geometry_(g), law_(&law) {
   g.validate();
   const double W = g.width, H = g.height, x0 = g.outlet_left(), x1 = g.outlet_right(), d = g.channel;
-  const auto segment = [&](Eigen::Vector2d a, Eigen::Vector2d b, bool chamber) {
+  const auto segment = [&](Eigen::Vector2d a, Eigen::Vector2d b, bool chamber, bool open_start, bool open_end) {
     const Eigen::Vector2d t = b - a;
     const double length = t.norm();
     const Eigen::Vector2d u = t / length;
     // Segments run with the inside on their left.
-    segments_.push_back({a, u, Eigen::Vector2d(-u[1], u[0]), length, chamber});
+    segments_.push_back({a, u, Eigen::Vector2d(-u[1], u[0]), length, chamber, open_start, open_end, !chamber});
   };
   // Counter-clockwise around the inside: bottom right of the outlet, right, top, left, bottom
-  // left of the outlet, then down the channel's left wall and up its right wall.
-  segment({x1, 0}, {W, 0}, true);     // 0
-  segment({W, 0}, {W, H}, true);      // 1
-  segment({W, H}, {0, H}, true);      // 2
-  segment({0, H}, {0, 0}, true);      // 3
-  segment({0, 0}, {x0, 0}, true);     // 4
-  segment({x0, 0}, {x0, -d}, false);  // 5
-  segment({x1, -d}, {x1, 0}, false);  // 6
+  // left of the outlet, then down the channel's left wall and up its right wall. Ends at the
+  // chamber's corners are open (concave), ends at the outlet and the channel's end closed.
+  segment({x1, 0}, {W, 0}, true, false, true);      // 0
+  segment({W, 0}, {W, H}, true, true, true);        // 1
+  segment({W, H}, {0, H}, true, true, true);        // 2
+  segment({0, H}, {0, 0}, true, true, true);        // 3
+  segment({0, 0}, {x0, 0}, true, true, false);      // 4
+  segment({x0, 0}, {x0, -d}, false, false, false);  // 5
+  segment({x1, -d}, {x1, 0}, false, false, false);  // 6
   // The convex corners: the outlet's edges and the channel's open end.
   corners_.push_back({{x0, 0}, {4, 5}, true});
   corners_.push_back({{x1, 0}, {6, 0}, true});

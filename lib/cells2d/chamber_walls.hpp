@@ -10,8 +10,10 @@
 // the thesis's harmonic law; an attractive law's well is not applied to walls). The wall is
 // straight segments plus the convex corners where segments end (the outlet's edges and the
 // channel's far end): a lobe whose centre projects onto a segment sees that segment, one that
-// projects onto none of a corner's segments sees the corner, so no contact is counted twice
-// and the energy is continuous everywhere.
+// projects onto none of a convex corner's segments sees the corner, so no contact is counted
+// twice and the energy is continuous everywhere. At the chamber's four (concave) corners the
+// walls continue as half-planes beyond their ends: a centre pushed past a corner, outside both
+// walls' spans, is still pushed back by both.
 #include "cells2d/cell.hpp"
 #include "cells2d/contact_law.hpp"
 #include "cells2d/contacts.hpp"
@@ -81,6 +83,11 @@ class ChamberWalls {
     Eigen::Vector2d a, tangent, normal;  // start, unit direction, unit inward normal
     double length;
     bool chamber;
+    bool open_start, open_end;  // the wall continues beyond this end (a concave corner)
+    // A channel wall has the channel on one side and solid beside the chamber's bottom wall on
+    // the other: it holds lobes from the channel's side, up to a centre a radius behind it, and
+    // leaves deeper ones to the bottom wall, which pushes them back into the chamber.
+    bool thin;
   };
   struct Corner {
     Eigen::Vector2d at;
@@ -92,7 +99,7 @@ class ChamberWalls {
   void touch(const Eigen::Vector2d& c, double radius, F&& f) const;
   bool projects_onto(const Segment& s, const Eigen::Vector2d& c) const {
     const double t = (c - s.a).dot(s.tangent);
-    return t >= 0 && t <= s.length;
+    return (s.open_start || t >= 0) && (s.open_end || t <= s.length);
   }
 
   ChamberGeometry geometry_;
@@ -113,10 +120,9 @@ void ChamberWalls::touch(const Eigen::Vector2d& c, double radius, F&& f) const {
     return;
   for (const Segment& s : segments_) {
     if (!projects_onto(s, c)) continue;
-    // A centre behind the wall is pushed back too: behind every wall is solid (the region below
-    // the bottom wall and beside the channel projects onto both and is pushed out of either).
+    // A centre behind a chamber wall is pushed back however deep (solid lies behind it).
     const double distance = (c - s.a).dot(s.normal), overlap = radius - distance;
-    if (overlap > 0) f(overlap, s.normal, s.chamber);
+    if (overlap > 0 && (!s.thin || distance > -radius)) f(overlap, s.normal, s.chamber);
   }
   for (const Corner& k : corners_) {
     bool in_band = false;

@@ -2,6 +2,7 @@
 // as dt -> 0, the sticky law, bookkeeping and determinism. The walls' forces against their
 // energy are checked by the generic harness (tests/forcefield, kind cells2d-chamber).
 #include "cells2d/chamber.hpp"
+#include "cells2d/avalanches.hpp"
 #include "cells2d/chamber_output.hpp"
 
 #include <catch2/catch.hpp>
@@ -124,6 +125,21 @@ TEST_CASE("chamber: Gear and Euler converge to the same trajectory as dt -> 0", 
   CHECK(distance(final_state("euler", 2e-7), final_state("gear3", 2e-7)) < 2e-5);
 }
 
+TEST_CASE("chamber: a lobe pushed past a corner of the chamber is pushed back by both walls", "[chamber]") {
+  ChamberGeometry g;
+  g.width = 4, g.height = 5;
+  ChamberWalls walls(g, contact_law("harmonic"));
+  // Bud-less cells whose centres lie beyond both walls of each corner (outside both spans).
+  const std::vector<std::pair<double, double>> beyond = {{-0.2, 5.3}, {4.3, 5.2}, {4.2, -0.3}, {-0.25, -0.2}};
+  for (const auto& [x, y] : beyond) {
+    std::vector<double> f(3, 0.0);
+    walls.add_forces({cell_at(x, y, 0, 0)}, f.data());
+    INFO("cell at " << x << ", " << y);
+    CHECK(f[0] * (x < 0 ? 1 : -1) == Approx(0.5 + std::abs(x < 0 ? x : x - 4)));
+    CHECK(f[1] * (y < 0 ? 1 : -1) == Approx(0.5 + std::abs(y < 0 ? y : y - 5)));
+  }
+}
+
 TEST_CASE("chamber: the sticky law pulls cells within Delta into contact, the harmonic law does not", "[chamber]") {
   for (double attraction : {0.0, 0.1}) {
     ChamberParameters p;
@@ -180,4 +196,33 @@ TEST_CASE("chamber: bad parameters are refused, naming the option", "[chamber]")
     p.geometry.height = 0, p.mobility = -1, p.P0 = -1;
   });
   CHECK_THAT(many, Catch::Contains("--height") && Catch::Contains("--mobility") && Catch::Contains("--P0"));
+}
+
+TEST_CASE("avalanches: a sawtooth series gives its drops, rates and sizes", "[chamber]") {
+  // Five cycles sampled every 0.05: the pressure rises from 0.1 to 0.3 over 0.9, then falls back
+  // to 0.1 over 0.1 while three cells leave.
+  PressureSeries s;
+  long left = 0;
+  for (int k = 0; k <= 100; ++k) {
+    const double t = 0.05 * k, phase = std::fmod(t, 1.0);
+    const bool falling = phase > 0.9 + 1e-9;
+    s.time.push_back(t);
+    s.pressure.push_back(falling ? 0.3 - 2 * (phase - 0.9) : 0.1 + 0.2 * phase / 0.9);
+    if (falling) left += 3;
+    s.left.push_back(left);
+  }
+  const auto events = find_avalanches(s, 0.06, 0);
+  REQUIRE(events.size() == 5);
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    INFO("event " << e);
+    CHECK(events[e].peak == Approx(0.3).margin(1e-9));
+    CHECK(events[e].drop == Approx(0.2).margin(1e-9));
+    CHECK(events[e].drop_rate == Approx(0.2 / 0.1).epsilon(1e-9));
+    CHECK(events[e].size == 3);
+    if (e > 0) CHECK(events[e].rise_rate == Approx(0.2 / 0.9).epsilon(0.1));
+  }
+  const AvalancheSummary m = summarise(s, events, 0);
+  CHECK(m.events == 5);
+  CHECK(m.rate_ratio > 5);  // drops far faster than rises
+  CHECK(m.mean_pressure == Approx(0.2).margin(0.01));
 }

@@ -151,6 +151,33 @@ case_chamber_bad_options_all_at_once() {
   expect_error 2 "--integrator: unknown integrator 'rk4'" "$jam2d" chamber --integrator rk4 --csv out.csv
   [ ! -e out.csv ] || fail "a refused run wrote out.csv"
 }
+case_avalanches_of_a_chamber_run() {
+  "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 6 --every 0.02 --seed 4 -q >series.csv || fail "chamber"
+  "$jam2d" avalanches series.csv --distribution dist.csv >drops.csv || fail "avalanches"
+  grep -q "^event,start,end,peak_time,peak,base_time,base,drop,rise_rate,drop_rate,cells$" drops.csv || fail "columns"
+  for key in mean_pressure events mean_drop drop_over_rise_rate tail_scale_over_mean_drop mobility; do
+    grep -q "^# $key=" drops.csv || fail "no $key"
+  done
+  /usr/bin/python3 - <<'PY' || fail "events add up"
+import csv
+rows = [r for r in csv.DictReader(l for l in open("drops.csv") if not l.startswith("#"))]
+series = [r for r in csv.DictReader(l for l in open("series.csv") if not l.startswith("#"))]
+assert len(rows) >= 3, len(rows)
+assert all(float(r["drop"]) >= 0 and float(r["peak"]) >= float(r["base"]) for r in rows)
+# Every cell that left after the first outflow belongs to one event.
+assert sum(int(r["cells"]) for r in rows) == int(series[-1]["left"]), (sum(int(r["cells"]) for r in rows), series[-1]["left"])
+PY
+  # From stdin too.
+  "$jam2d" avalanches - <series.csv | cmp -s - drops.csv || true
+  "$jam2d" avalanches - <series.csv >stdin.csv || fail "stdin"
+  [ "$(grep -vc '^#' stdin.csv)" = "$(grep -vc '^#' drops.csv)" ] || fail "stdin gives other events"
+}
+case_avalanches_bad_series() {
+  printf 'time,left,pressure_walls\n0,0,0.1\n0.5,1,0.2\n0.5,2,0.1\n' >s.csv
+  expect_error 2 "s.csv:4: time must increase" "$jam2d" avalanches s.csv -o out.csv
+  printf 'time,left\n0,0\n' >t.csv
+  expect_error 2 "t.csv:1: .*pressure_walls" "$jam2d" avalanches t.csv -o out.csv
+}
 case_unknown_option() {
   expect_error 2 "--frobnicate" "$jam2d" grow --box 4 --frobnicate -o out.xyz --csv out.csv
 }

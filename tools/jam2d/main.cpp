@@ -4,6 +4,8 @@
 //   jam2d moduli pack.xyz > moduli.csv                               P, B, G, Z, f_u of static packings
 //   jam2d sweep --box 10 --seeds 1:100 --dphi 0:0.1:0.01 --P0 inf,0.005,0.001 > sweep.csv
 //   jam2d chamber --width 6 --height 16 --outlet 1.4 --seed 1 --time 200 -o run.xyz > pressure.csv
+//   jam2d avalanches pressure.csv > drops.csv                        drops, rises and outflow events
+#include "cells2d/avalanches.hpp"
 #include "cells2d/chamber_output.hpp"
 #include "cells2d/packing_xyz.hpp"
 #include "cells2d/tables.hpp"
@@ -18,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <iostream>
 #include <memory>
@@ -41,6 +44,8 @@ struct Options {
   std::vector<double> dphis, P0s;
   ChamberParameters chamber;
   double duration = 100, sample_every = 0.01, frame_every = 1;
+  std::string pressure_column = "pressure_walls", distribution_output;
+  double merge = 0.05, from = -1;
 };
 
 void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
@@ -245,6 +250,72 @@ void run_chamber(const Options& o, const std::string& provenance) {
                              run.cells().size(), run.divisions(), run.left(), run.evaluations(), run.list_builds());
 }
 
+void run_avalanches(const Options& o, const std::string& provenance) {
+  const io::CsvTable t = io::read_csv(o.inputs.at(0));
+  const int time = t.column("time"), pressure = t.column(o.pressure_column), left = t.column("left");
+  PressureSeries s;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    s.time.push_back(t.number(r, time));
+    s.pressure.push_back(t.number(r, pressure));
+    s.left.push_back(static_cast<long>(t.integer(r, left, 0, 1'000'000'000'000LL)));
+    if (r > 0 && !(s.time[r] > s.time[r - 1]))
+      throw InputError(t.file, t.row_lines[r], "time must increase from row to row");
+    if (r > 0 && s.left[r] < s.left[r - 1])
+      throw InputError(t.file, t.row_lines[r], "left (cells removed so far) must not decrease");
+  }
+  const std::vector<Avalanche> events = find_avalanches(s, o.merge, o.from);
+  const AvalancheSummary m = summarise(s, events, o.from);
+  std::unique_ptr<io::AtomicOutput> distribution;
+  if (!o.distribution_output.empty()) distribution = std::make_unique<io::AtomicOutput>(o.distribution_output);
+  io::AtomicOutput out(o.output);
+  io::CsvWriter table(out.stream());
+  const auto num = [](double v) { return io::format_number(v); };
+  table.meta("provenance", provenance);
+  table.meta("units", kUnits);
+  table.meta("input", o.inputs.at(0));
+  table.meta("pressure", o.pressure_column);
+  if (const auto* seed = t.find_meta("seed")) table.meta("seed", *seed);
+  for (const char* key : {"mobility", "P0", "outlet", "attraction"})
+    if (const auto* v = t.find_meta(key)) table.meta(key, *v);
+  table.meta("from", num(m.from));
+  table.meta("to", num(m.to));
+  table.meta("mean_pressure", num(m.mean_pressure));
+  table.meta("events", std::to_string(m.events));
+  table.meta("mean_drop", num(m.mean_drop));
+  table.meta("mean_size", num(m.mean_size));
+  table.meta("mean_rise_rate", num(m.mean_rise_rate));
+  table.meta("mean_drop_rate", num(m.mean_drop_rate));
+  table.meta("drop_over_rise_rate", num(m.rate_ratio));
+  table.meta("tail_events", std::to_string(m.tail_events));
+  table.meta("tail_scale_over_mean_drop", num(m.tail_scale));
+  table.meta("tail_ks_distance", num(m.tail_ks));
+  table.header({"event", "start", "end", "peak_time", "peak", "base_time", "base", "drop", "rise_rate", "drop_rate",
+                "cells"});
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    const Avalanche& a = events[e];
+    table.row({std::to_string(e), num(a.start), num(a.end), num(a.peak_time), num(a.peak), num(a.base_time),
+               num(a.base), num(a.drop), num(a.rise_rate), num(a.drop_rate), std::to_string(a.size)});
+  }
+  if (distribution) {
+    // The survival function of the drops in units of their mean (Fig. 2.2e) and the exponential
+    // of the fitted tail.
+    std::vector<double> drops;
+    for (const Avalanche& a : events) drops.push_back(m.mean_drop > 0 ? a.drop / m.mean_drop : 0.0);
+    std::sort(drops.begin(), drops.end());
+    io::CsvWriter d(distribution->stream());
+    d.meta("provenance", provenance);
+    d.meta("input", o.inputs.at(0));
+    d.meta("mean_drop", num(m.mean_drop));
+    d.header({"drop_over_mean", "survival", "exponential_tail"});
+    const double n = static_cast<double>(drops.size()), tail = static_cast<double>(m.tail_events) / std::max(1.0, n);
+    for (std::size_t i = 0; i < drops.size(); ++i) {
+      const double x = drops[i], model = x > 1 && m.tail_scale > 0 ? tail * std::exp(-(x - 1) / m.tail_scale) : 0.0;
+      d.row({num(x), num(1 - static_cast<double>(i) / n), num(model)});
+    }
+  }
+  io::commit_in_order({distribution.get(), &out});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -285,6 +356,20 @@ int main(int argc, char** argv) {
                                                    "CSV row per --every");
     add_chamber_options(tool, *chamber, o);
 
+    auto* avalanches = app->add_subcommand("avalanches", "outflow events of a chamber's time series: pressure drops, "
+                                                         "rises and avalanche sizes; CSV row per event");
+    avalanches->add_option("series", o.inputs, "time series as `jam2d chamber` writes it ('-': stdin)")->required();
+    tool.declare_inputs(*avalanches, o.inputs);
+    avalanches->add_option("--pressure", o.pressure_column, "the pressure column: pressure_walls or pressure_virial")
+        ->capture_default_str();
+    tool.add_double(*avalanches, "--merge", o.merge, "outflow samples closer than this are one event [1/gamma0]",
+                    cli::non_negative());
+    tool.add_double(*avalanches, "--from", o.from, "analyse from this time [1/gamma0]; -1: from the first outflow");
+    tool.add_output(*avalanches, "-o,--output", o.output, "events CSV ('-': stdout)");
+    tool.add_output(*avalanches, "--distribution", o.distribution_output,
+                    "survival function of the drops over their mean, with the exponential tail fit (CSV)");
+    tool.add_common(*avalanches, o.common, cli::Tool::kQuiet);
+
     tool.parse(argc, argv);
     if (o.list_models) {
       write_style_header(std::cout);
@@ -292,7 +377,7 @@ int main(int argc, char** argv) {
       write_styles(std::cout, "integrator", integrator_styles());
       return 0;
     }
-    tool.check(app->get_subcommands().size() == 1, "", "a subcommand is required: grow, moduli, sweep or chamber (or --list-models)");
+    tool.check(app->get_subcommands().size() == 1, "", "a subcommand is required: grow, moduli, sweep, chamber or avalanches (or --list-models)");
     std::vector<std::uint64_t> seeds;
     if (grow->parsed()) {
       check_growth(tool, o);
@@ -318,6 +403,11 @@ int main(int argc, char** argv) {
       const int to_stdout = (o.csv_output == "-") + (o.trajectory_output == "-");
       tool.check(to_stdout <= 1, "", "--csv and -o: at most one of them may be '-' (stdout)");
     }
+    if (avalanches->parsed()) {
+      tool.check(o.pressure_column == "pressure_walls" || o.pressure_column == "pressure_virial", "--pressure",
+                 "must be pressure_walls or pressure_virial");
+      tool.check(o.from == -1 || o.from >= 0, "--from", "must be a time >= 0, or -1");
+    }
     tool.finish_checks();
     cli::apply_threads(o.common);
     const std::string provenance = cli::provenance("jam2d", argc, argv);
@@ -325,6 +415,7 @@ int main(int argc, char** argv) {
     if (moduli->parsed()) run_moduli(o, provenance);
     if (sweep->parsed()) run_sweep(o, seeds, provenance);
     if (chamber->parsed()) run_chamber(o, provenance);
+    if (avalanches->parsed()) run_avalanches(o, provenance);
     return 0;
   });
 }
