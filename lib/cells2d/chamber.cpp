@@ -2,6 +2,7 @@
 
 #include "cells2d/growth.hpp"
 #include "core/errors.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/csv.hpp"
 
 #include <fmt/format.h>
@@ -211,6 +212,33 @@ void ChamberRun::update_rates() {
   growth_factor_.resize(n);
   for (std::size_t i = 0; i < n; ++i) growth_factor_[i] = std::exp(cells_[i].rate * dt_);
   next_rate_update_ = steps_ + std::max(1L, std::lround(params_.feedback_interval / dt_));
+}
+
+void ChamberRun::save(std::ostream& out) const {
+  io::put(out, steps_), io::put(out, left_), io::put(out, divisions_), io::put(out, next_rate_update_);
+  io::put(out, rng_);
+  io::put(out, cells_);
+  io::put(out, growth_factor_);
+  io::put(out, fresh_);
+  io::put(out, integrator_->history());
+  io::put(out, integrator_->evaluations());
+}
+
+void ChamberRun::load(io::CheckpointReader& in) {
+  constexpr std::uint64_t kMax = 100'000'000;
+  steps_ = in.get<long>();  // one statement each: the reads must happen in this order
+  left_ = in.get<long>();
+  divisions_ = in.get<long>();
+  next_rate_update_ = in.get<long>();
+  in.get_into(rng_);
+  cells_ = in.get_vector<Cell>(kMax);
+  growth_factor_ = in.get_vector<double>(kMax);
+  fresh_ = in.get_vector<char>(3 * kMax);
+  std::vector<double> history = in.get_vector<double>(4 * kMax);
+  const long evaluations = in.get<long>();
+  integrator_->set_history(std::move(history), evaluations);
+  if (growth_factor_.size() != cells_.size() || fresh_.size() != 3 * cells_.size())
+    throw InputError(in.path(), 0, "truncated or damaged checkpoint");
 }
 
 ChamberSample ChamberRun::sample() {

@@ -24,6 +24,10 @@
 #include <string>
 #include <vector>
 
+namespace cmp::io {
+class CheckpointReader;
+}
+
 namespace cmp::cells2d {
 
 struct ChamberParameters {
@@ -93,6 +97,11 @@ class ChamberRun {
   long divisions() const { return divisions_; }
   const ChamberParameters& parameters() const { return params_; }
   long evaluations() const { return integrator_->evaluations(); }
+
+  // The whole state, bit for bit (io/checkpoint_file.hpp's raw values): a run restored from it
+  // continues exactly as the saved one would have. The parameters are the caller's to check.
+  void save(std::ostream& out) const;
+  void load(io::CheckpointReader& in);
   long list_builds() const { return engine_->list_builds(); }
 
  private:

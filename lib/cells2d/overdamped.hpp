@@ -31,6 +31,10 @@ class OverdampedIntegrator {
   // The history, for checkpoints.
   virtual std::vector<double> history() const = 0;
   virtual void set_history(std::vector<double> h) = 0;
+  void set_history(std::vector<double> h, long evaluations) {
+    set_history(std::move(h));
+    evaluations_ = evaluations;
+  }
   // Force evaluations so far.
   long evaluations() const { return evaluations_; }
 

@@ -101,6 +101,12 @@ class CheckpointReader {
     read(reinterpret_cast<char*>(&v), sizeof v);
     return v;
   }
+  // Into an existing value (a type without a default constructor, e.g. a random generator).
+  template <class T>
+  void get_into(T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    read(reinterpret_cast<char*>(&v), sizeof v);
+  }
   template <class T>
   std::vector<T> get_vector(std::uint64_t max_size) {
     const auto n = get<std::uint64_t>();

@@ -189,6 +189,14 @@ void CsvWriter::header(const std::vector<std::string>& columns) {
   columns_ = columns;
 }
 
+void CsvWriter::header_written_before(const std::vector<std::string>& columns) {
+  if (has_header_) throw std::logic_error("CsvWriter::header called twice");
+  if (columns.empty()) throw std::invalid_argument("CsvWriter::header: no columns");
+  width_ = columns.size();
+  has_header_ = true;
+  columns_ = columns;
+}
+
 void CsvWriter::row(const std::vector<std::string>& cells) {
   if (width_ == 0) throw std::logic_error("CsvWriter::row before the header");
   if (cells.size() != width_)

@@ -63,6 +63,9 @@ class CsvWriter {
   void meta(const std::string& key, const std::string& value);
   // The header row; sets the width of every row. Throws std::logic_error when called twice.
   void header(const std::vector<std::string>& columns);
+  // The same for a table whose meta lines and header an earlier run wrote (a run resumed from
+  // its checkpoint appends rows): sets the width, writes nothing.
+  void header_written_before(const std::vector<std::string>& columns);
   // A row of already formatted cells; see format_number() for doubles. Throws
   // std::invalid_argument when the width differs from the header's, std::logic_error before
   // the header.

@@ -151,6 +151,27 @@ case_chamber_bad_options_all_at_once() {
   expect_error 2 "--integrator: unknown integrator 'rk4'" "$jam2d" chamber --integrator rk4 --csv out.csv
   [ ! -e out.csv ] || fail "a refused run wrote out.csv"
 }
+case_chamber_resumed_run_is_byte_identical() {
+  local args="chamber --width 4 --height 5 --mobility 2e3 --every 0.1 --seed 2 -o run.xyz --csv run.csv --checkpoint run.ckpt"
+  mkdir whole stopped longer
+  (cd whole && "$jam2d" $args --time 3 -q) || fail "whole run"
+  (cd stopped && "$jam2d" $args --time 3 --stop-after 1.45 -q) || fail "stopped run"
+  [ -e stopped/run.ckpt ] && [ ! -e stopped/run.csv ] || fail "a stopped run leaves its checkpoint and no outputs"
+  (cd stopped && "$jam2d" $args --time 3 --resume run.ckpt -q) || fail "resume"
+  cmp whole/run.csv stopped/run.csv || fail "resumed series differs"
+  cmp whole/run.xyz stopped/run.xyz || fail "resumed frames differ"
+  # A finished run continues to a longer --time as if it had been asked for at once.
+  (cd longer && "$jam2d" $args --time 4 -q) || fail "longer run"
+  (cd whole && "$jam2d" $args --time 4 --resume run.ckpt -q) || fail "continue"
+  cmp <(grep -v provenance whole/run.csv) <(grep -v provenance longer/run.csv) || fail "continued series differs"
+  # Another geometry, a changed byte: one line, exit 2, nothing written.
+  cd stopped
+  expect_error 2 "run.ckpt: the checkpoint is of another run: width=4 there, 4.5 here" \
+    "$jam2d" chamber --width 4.5 --height 5 --mobility 2e3 --every 0.1 --seed 2 --time 3 --csv out.csv --checkpoint run.ckpt --resume run.ckpt
+  printf 'x' | dd of=run.ckpt bs=1 seek=3000 conv=notrunc 2>/dev/null
+  expect_error 2 "run.ckpt: checkpoint damaged" \
+    "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --every 0.1 --seed 2 --time 3 --csv out.csv --checkpoint run.ckpt --resume run.ckpt
+}
 case_avalanches_of_a_chamber_run() {
   "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 6 --every 0.02 --seed 4 -q >series.csv || fail "chamber"
   "$jam2d" avalanches series.csv --distribution dist.csv >drops.csv || fail "avalanches"

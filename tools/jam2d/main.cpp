@@ -5,10 +5,10 @@
 //   jam2d sweep --box 10 --seeds 1:100 --dphi 0:0.1:0.01 --P0 inf,0.005,0.001 > sweep.csv
 //   jam2d chamber --width 6 --height 16 --outlet 1.4 --seed 1 --time 200 -o run.xyz > pressure.csv
 //   jam2d avalanches pressure.csv > drops.csv                        drops, rises and outflow events
-#include "cells2d/avalanches.hpp"
-#include "cells2d/chamber_output.hpp"
+#include "cells2d/chamber_job.hpp"
 #include "cells2d/packing_xyz.hpp"
 #include "cells2d/tables.hpp"
+#include "cli/checkpoint_args.hpp"
 #include "cli/progress.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
@@ -42,10 +42,8 @@ struct Options {
   std::vector<std::string> inputs;
   std::string output = "-";
   std::vector<double> dphis, P0s;
-  ChamberParameters chamber;
-  double duration = 100, sample_every = 0.01, frame_every = 1;
-  std::string pressure_column = "pressure_walls", distribution_output;
-  double merge = 0.05, from = -1;
+  ChamberJob chamber;
+  AvalancheJob avalanches;
 };
 
 void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
@@ -187,7 +185,7 @@ void run_sweep(const Options& o, const std::vector<std::uint64_t>& seeds, const 
 }
 
 void add_chamber_options(cli::Tool& tool, CLI::App& sub, Options& o) {
-  ChamberParameters& c = o.chamber;
+  ChamberParameters& c = o.chamber.parameters;
   tool.add_double(sub, "--width", c.geometry.width, "chamber width L_x [sigma]");
   tool.add_double(sub, "--height", c.geometry.height, "chamber height L_y [sigma]");
   tool.add_double(sub, "--outlet", c.geometry.outlet, "outlet width a, centred in the bottom wall [sigma]");
@@ -203,117 +201,17 @@ void add_chamber_options(cli::Tool& tool, CLI::App& sub, Options& o) {
   sub.add_option("--feedback-pressure", c.feedback_pressure, "the pressure that slows a cell: cell or bud")
       ->capture_default_str();
   tool.add_double(sub, "--feedback-interval", c.feedback_interval, "time between growth-rate updates [1/gamma0]");
-  tool.add_double(sub, "--time", o.duration, "simulated time [1/gamma0]", cli::positive());
-  tool.add_double(sub, "--every", o.sample_every, "time between rows of the time series [1/gamma0]", cli::positive());
-  tool.add_double(sub, "--frame-every", o.frame_every, "time between trajectory frames [1/gamma0]", cli::positive());
-  tool.add_output(sub, "-o,--trajectory", o.trajectory_output, "extended XYZ frames of the chamber ('-': stdout)");
-  tool.add_output(sub, "--csv", o.csv_output, "time series, one row per --every ('-': stdout)");
+  ChamberJob& j = o.chamber;
+  tool.add_double(sub, "--time", j.duration, "simulated time [1/gamma0]", cli::positive());
+  tool.add_double(sub, "--every", j.sample_every, "time between rows of the time series [1/gamma0]", cli::positive());
+  tool.add_double(sub, "--frame-every", j.frame_every, "time between trajectory frames [1/gamma0]", cli::positive());
+  tool.add_output(sub, "-o,--trajectory", j.trajectory, "extended XYZ frames of the chamber ('-': stdout)");
+  tool.add_output(sub, "--csv", j.csv, "time series, one row per --every ('-': stdout; '' for none)");
+  tool.add_output(sub, "--checkpoint", j.checkpoint, "save the run here every --checkpoint-every seconds and at the end");
+  tool.add_double(sub, "--checkpoint-every", j.checkpoint_every, "seconds between checkpoints", cli::non_negative());
+  sub.add_option("--resume", j.resume, "continue the run saved in this checkpoint (repeat the run's options)");
+  tool.add_double(sub, "--stop-after", j.stop_after, "stop at this time with a checkpoint and no outputs (for tests)");
   tool.add_common(sub, o.common, cli::Tool::kSeed | cli::Tool::kQuiet);
-}
-
-void run_chamber(const Options& o, const std::string& provenance) {
-  std::unique_ptr<io::AtomicOutput> csv, trajectory;
-  if (!o.csv_output.empty()) csv = std::make_unique<io::AtomicOutput>(o.csv_output);
-  if (!o.trajectory_output.empty()) trajectory = std::make_unique<io::AtomicOutput>(o.trajectory_output);
-  const ChamberParameters& p = o.chamber;
-  ChamberRun run(p, o.common.seed);
-  std::unique_ptr<io::CsvWriter> table;
-  if (csv) {
-    table = std::make_unique<io::CsvWriter>(csv->stream());
-    table->allow_infinity();  // P0 = inf: no feedback
-    table->meta("provenance", provenance);
-    table->meta("units", kUnits);
-    for (const auto& [k, v] : chamber_info(p, o.common.seed)) table->meta(k, v);
-    table->header(chamber_columns());
-  }
-  std::unique_ptr<io::XyzWriter> frames;
-  if (trajectory) frames = std::make_unique<io::XyzWriter>(trajectory->stream());
-  auto info = chamber_info(p, o.common.seed);
-  info.insert(info.begin(), {"tool", provenance});
-  cli::ProgressBar bar("chamber", o.duration, o.common.quiet);
-  const long samples = std::lround(o.duration / o.sample_every);
-  const long frame_stride = std::max(1L, std::lround(o.frame_every / o.sample_every));
-  for (long k = 0; k <= samples; ++k) {
-    run.advance_to(static_cast<double>(k) * o.sample_every);
-    ChamberSample s = run.sample();
-    s.time = static_cast<double>(k) * o.sample_every;  // the scheduled time, to within a step
-    if (table) table->row(chamber_row(s));
-    if (frames && k % frame_stride == 0) frames->write(chamber_frame(run, info));
-    bar.set_note(fmt::format("{} cells, P {:.3f} k, {} left", s.chamber_cells, s.pressure_walls, s.left));
-    bar.update(run.time());
-  }
-  bar.finish();
-  io::commit_in_order({trajectory.get(), csv.get()});
-  if (!o.common.quiet)
-    std::cerr << fmt::format("jam2d: t = {}/gamma0 in {} steps (dt {}); {} cells in the chamber, {} divisions, {} left; {} evaluations, {} neighbour-list builds\n",
-                             io::format_number(run.time()), run.steps(), io::format_number(p.time_step()),
-                             run.cells().size(), run.divisions(), run.left(), run.evaluations(), run.list_builds());
-}
-
-void run_avalanches(const Options& o, const std::string& provenance) {
-  const io::CsvTable t = io::read_csv(o.inputs.at(0));
-  const int time = t.column("time"), pressure = t.column(o.pressure_column), left = t.column("left");
-  PressureSeries s;
-  for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    s.time.push_back(t.number(r, time));
-    s.pressure.push_back(t.number(r, pressure));
-    s.left.push_back(static_cast<long>(t.integer(r, left, 0, 1'000'000'000'000LL)));
-    if (r > 0 && !(s.time[r] > s.time[r - 1]))
-      throw InputError(t.file, t.row_lines[r], "time must increase from row to row");
-    if (r > 0 && s.left[r] < s.left[r - 1])
-      throw InputError(t.file, t.row_lines[r], "left (cells removed so far) must not decrease");
-  }
-  const std::vector<Avalanche> events = find_avalanches(s, o.merge, o.from);
-  const AvalancheSummary m = summarise(s, events, o.from);
-  std::unique_ptr<io::AtomicOutput> distribution;
-  if (!o.distribution_output.empty()) distribution = std::make_unique<io::AtomicOutput>(o.distribution_output);
-  io::AtomicOutput out(o.output);
-  io::CsvWriter table(out.stream());
-  const auto num = [](double v) { return io::format_number(v); };
-  table.meta("provenance", provenance);
-  table.meta("units", kUnits);
-  table.meta("input", o.inputs.at(0));
-  table.meta("pressure", o.pressure_column);
-  if (const auto* seed = t.find_meta("seed")) table.meta("seed", *seed);
-  for (const char* key : {"mobility", "P0", "outlet", "attraction"})
-    if (const auto* v = t.find_meta(key)) table.meta(key, *v);
-  table.meta("from", num(m.from));
-  table.meta("to", num(m.to));
-  table.meta("mean_pressure", num(m.mean_pressure));
-  table.meta("events", std::to_string(m.events));
-  table.meta("mean_drop", num(m.mean_drop));
-  table.meta("mean_size", num(m.mean_size));
-  table.meta("mean_rise_rate", num(m.mean_rise_rate));
-  table.meta("mean_drop_rate", num(m.mean_drop_rate));
-  table.meta("drop_over_rise_rate", num(m.rate_ratio));
-  table.meta("tail_events", std::to_string(m.tail_events));
-  table.meta("tail_scale_over_mean_drop", num(m.tail_scale));
-  table.meta("tail_ks_distance", num(m.tail_ks));
-  table.header({"event", "start", "end", "peak_time", "peak", "base_time", "base", "drop", "rise_rate", "drop_rate",
-                "cells"});
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    const Avalanche& a = events[e];
-    table.row({std::to_string(e), num(a.start), num(a.end), num(a.peak_time), num(a.peak), num(a.base_time),
-               num(a.base), num(a.drop), num(a.rise_rate), num(a.drop_rate), std::to_string(a.size)});
-  }
-  if (distribution) {
-    // The survival function of the drops in units of their mean (Fig. 2.2e) and the exponential
-    // of the fitted tail.
-    std::vector<double> drops;
-    for (const Avalanche& a : events) drops.push_back(m.mean_drop > 0 ? a.drop / m.mean_drop : 0.0);
-    std::sort(drops.begin(), drops.end());
-    io::CsvWriter d(distribution->stream());
-    d.meta("provenance", provenance);
-    d.meta("input", o.inputs.at(0));
-    d.meta("mean_drop", num(m.mean_drop));
-    d.header({"drop_over_mean", "survival", "exponential_tail"});
-    const double n = static_cast<double>(drops.size()), tail = static_cast<double>(m.tail_events) / std::max(1.0, n);
-    for (std::size_t i = 0; i < drops.size(); ++i) {
-      const double x = drops[i], model = x > 1 && m.tail_scale > 0 ? tail * std::exp(-(x - 1) / m.tail_scale) : 0.0;
-      d.row({num(x), num(1 - static_cast<double>(i) / n), num(model)});
-    }
-  }
-  io::commit_in_order({distribution.get(), &out});
 }
 
 }  // namespace
@@ -358,15 +256,16 @@ int main(int argc, char** argv) {
 
     auto* avalanches = app->add_subcommand("avalanches", "outflow events of a chamber's time series: pressure drops, "
                                                          "rises and avalanche sizes; CSV row per event");
-    avalanches->add_option("series", o.inputs, "time series as `jam2d chamber` writes it ('-': stdin)")->required();
-    tool.declare_inputs(*avalanches, o.inputs);
-    avalanches->add_option("--pressure", o.pressure_column, "the pressure column: pressure_walls or pressure_virial")
+    AvalancheJob& av = o.avalanches;
+    avalanches->add_option("series", av.input, "time series as `jam2d chamber` writes it ('-': stdin)")->required();
+    tool.declare_input(*avalanches, av.input);
+    avalanches->add_option("--pressure", av.pressure_column, "the pressure column: pressure_walls or pressure_virial")
         ->capture_default_str();
-    tool.add_double(*avalanches, "--merge", o.merge, "outflow samples closer than this are one event [1/gamma0]",
+    tool.add_double(*avalanches, "--merge", av.merge, "outflow samples closer than this are one event [1/gamma0]",
                     cli::non_negative());
-    tool.add_double(*avalanches, "--from", o.from, "analyse from this time [1/gamma0]; -1: from the first outflow");
-    tool.add_output(*avalanches, "-o,--output", o.output, "events CSV ('-': stdout)");
-    tool.add_output(*avalanches, "--distribution", o.distribution_output,
+    tool.add_double(*avalanches, "--from", av.from, "analyse from this time [1/gamma0]; -1: from the first outflow");
+    tool.add_output(*avalanches, "-o,--output", av.output, "events CSV ('-': stdout)");
+    tool.add_output(*avalanches, "--distribution", av.distribution,
                     "survival function of the drops over their mean, with the exponential tail fit (CSV)");
     tool.add_common(*avalanches, o.common, cli::Tool::kQuiet);
 
@@ -396,17 +295,23 @@ int main(int argc, char** argv) {
       tool.check(!o.seeding.resume, "--resume", "sweep writes one table; run the missing seeds and join the tables");
     }
     if (chamber->parsed()) {
-      tool.collect("--P0", [&] { o.chamber.P0 = parse_feedback(o.P0_text); });
-      for (const auto& [flag, message] : o.chamber.problems()) tool.check(false, flag, message);
-      tool.check(o.sample_every <= o.duration, "--every", "must not exceed --time");
-      tool.check(o.duration / o.sample_every <= 1e8, "--every", "more than 1e8 rows: choose a larger --every");
-      const int to_stdout = (o.csv_output == "-") + (o.trajectory_output == "-");
+      ChamberJob& j = o.chamber;
+      tool.collect("--P0", [&] { j.parameters.P0 = parse_feedback(o.P0_text); });
+      for (const auto& [flag, message] : j.parameters.problems()) tool.check(false, flag, message);
+      tool.check(j.sample_every <= j.duration, "--every", "must not exceed --time");
+      tool.check(j.duration / j.sample_every <= 1e8, "--every", "more than 1e8 rows: choose a larger --every");
+      const int to_stdout = (j.csv == "-") + (j.trajectory == "-");
       tool.check(to_stdout <= 1, "", "--csv and -o: at most one of them may be '-' (stdout)");
+      tool.check(j.resume.empty() || j.resume != "-", "--resume", "needs a file, not stdin");
+      tool.check(j.stop_after < 0 || !j.checkpoint.empty(), "--stop-after", "needs --checkpoint");
+      j.seed = o.common.seed;
+      j.quiet = o.common.quiet;
     }
     if (avalanches->parsed()) {
-      tool.check(o.pressure_column == "pressure_walls" || o.pressure_column == "pressure_virial", "--pressure",
+      const AvalancheJob& av = o.avalanches;
+      tool.check(av.pressure_column == "pressure_walls" || av.pressure_column == "pressure_virial", "--pressure",
                  "must be pressure_walls or pressure_virial");
-      tool.check(o.from == -1 || o.from >= 0, "--from", "must be a time >= 0, or -1");
+      tool.check(av.from == -1 || av.from >= 0, "--from", "must be a time >= 0, or -1");
     }
     tool.finish_checks();
     cli::apply_threads(o.common);
@@ -414,8 +319,22 @@ int main(int argc, char** argv) {
     if (grow->parsed()) run_grow(o, provenance);
     if (moduli->parsed()) run_moduli(o, provenance);
     if (sweep->parsed()) run_sweep(o, seeds, provenance);
-    if (chamber->parsed()) run_chamber(o, provenance);
-    if (avalanches->parsed()) run_avalanches(o, provenance);
+    if (chamber->parsed()) {
+      // The run without the options that steer only this process: a stopped and resumed run
+      // then records the same provenance, so writes the same bytes, as one never stopped.
+      static constexpr cli::ProcessOnlyOption kProcessOnly[] = {
+          {"--resume", true}, {"--stop-after", true}, {"--checkpoint-every", true}, {"-q", false}, {"--quiet", false}};
+      std::vector<std::string> args(argv, argv + argc);
+      std::vector<std::string> run_args = cli::checkpoint_arguments(args, kProcessOnly);
+      std::vector<char*> run_argv;
+      for (auto& a : run_args) run_argv.push_back(a.data());
+      o.chamber.provenance = cli::provenance("jam2d", static_cast<int>(run_argv.size()), run_argv.data());
+      run_chamber_job(o.chamber);
+    }
+    if (avalanches->parsed()) {
+      o.avalanches.provenance = provenance;
+      run_avalanche_job(o.avalanches);
+    }
     return 0;
   });
 }
