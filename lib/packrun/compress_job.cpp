@@ -47,12 +47,17 @@ std::string join(const std::vector<double>& v) {
   return s;
 }
 
+// The cells of a row as format_row joins them, empty ones kept (also the last: "a,b," is
+// three cells).
 std::vector<std::string> split_cells(const std::string& line) {
   std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  return cells;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', begin);
+    cells.push_back(line.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin));
+    if (comma == std::string::npos) return cells;
+    begin = comma + 1;
+  }
 }
 
 }  // namespace
@@ -173,6 +178,30 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     return s;
   };
 
+  // The table's columns; format_row writes them in this order.
+  std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
+                                  "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
+                                  "asphericity_mean_d02", "delta_eps_mean", "volume_error", "energy_Ed3"};
+  for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
+  if (o.walls)
+    for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);
+  for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
+  if (job.timings) header.push_back("seconds");
+  // A row restored from a checkpoint has `seconds` when the run that wrote it had --timings,
+  // which a resume may add or drop: the row is brought to this run's columns (an empty
+  // `seconds` where its time is unknown, none where this run has no timings).
+  const std::size_t untimed_cells = header.size() - (job.timings ? 1 : 0);
+  const auto restored_row = [&](std::string row, std::uint64_t index) {
+    const std::size_t cells = split_cells(row).size();
+    if (cells == untimed_cells && job.timings) return row + ",";
+    if (cells == untimed_cells + 1 && !job.timings) return row.substr(0, row.rfind(','));
+    if (cells == untimed_cells || cells == untimed_cells + 1) return row;
+    throw InputError(job.resume, 0,
+                     fmt::format("row {} of the table has {} cells where this run has {} (or {} with --timings): "
+                                 "truncated or damaged checkpoint",
+                                 index, cells, untimed_cells, untimed_cells + 1));
+  };
+
   // The checkpoint: the state after the last converged step.
   std::optional<shell::CompressionState> saved;
   std::size_t saved_rows = 0;
@@ -218,7 +247,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     st.volume0 = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
     const auto n_rows = r.get<std::uint64_t>();
     if (n_rows > max_rows) throw InputError(job.resume, 0, "truncated or damaged checkpoint");
-    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(r.get_string(1 << 20));
+    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(restored_row(r.get_string(1 << 20), k));
     try {
       run.restore(st);
     } catch (const std::invalid_argument&) {
@@ -268,14 +297,6 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
       csv.meta("walls", wall_name);
       csv.meta("phi_start", io::format_number(o.phi_start));
     }
-    std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
-                                    "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
-                                    "asphericity_mean_d02", "delta_eps_mean", "volume_error", "energy_Ed3"};
-    for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
-    if (o.walls)
-      for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);
-    for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
-    if (job.timings) header.push_back("seconds");
     csv.header(header);
     for (const auto& r : rows) csv.row(split_cells(r));
     csv_out->commit();

@@ -140,6 +140,30 @@ case_resume_writes_the_same_bytes() {
   cmp -s whole/run.chk parts/run.chk || fail "final checkpoints differ"
 }
 
+# A resume may add --timings to a run without it, or drop it (--timings=false): the rows the
+# checkpoint holds get an empty `seconds` (their time unknown) or lose theirs; every other cell
+# is the uninterrupted run's. (It used to end in "internal error: CsvWriter::row: 21 cells,
+# the header has 22" after the packings and the checkpoint were written.)
+case_resume_adds_or_drops_timings() {
+  make_start
+  compress --phi 0.44,0.45 >whole.csv || fail "uninterrupted run"
+  compress --phi 0.44,0.45 --checkpoint plain.chk --stop-after-steps 1 >/dev/null || fail "first part, no timings"
+  "$shellpack" compress --resume plain.chk --timings -q >timed.csv 2>err.txt || fail "resume with --timings: $(cat err.txt)"
+  [ "$(grep -v '^#' timed.csv | head -1 | awk -F, '{ print $NF }')" = seconds ] || fail "no seconds column"
+  # Steps 0 and 1 come from the checkpoint, step 2 was timed here.
+  [ "$(col timed.csv seconds | tr '\n' ' ')" = "  $(col timed.csv seconds | tail -1) " ] ||
+    fail "seconds: restored rows should be empty, the new one a time: $(col timed.csv seconds | tr '\n' '|')"
+  awk -v s="$(col timed.csv seconds | tail -1)" 'BEGIN { exit !(s > 0) }' || fail "the new row's seconds"
+  grep -v '^#' timed.csv | sed 's/,[^,]*$//' >timed_cut.txt
+  grep -v '^#' whole.csv >whole_rows.txt
+  cmp -s timed_cut.txt whole_rows.txt || fail "rows differ from the uninterrupted run: $(diff timed_cut.txt whole_rows.txt | head -4)"
+  compress --phi 0.44,0.45 --timings --checkpoint timed.chk --stop-after-steps 1 >/dev/null || fail "first part, timings"
+  "$shellpack" compress --resume timed.chk --timings=false -q >untimed.csv 2>err.txt ||
+    fail "resume with --timings=false: $(cat err.txt)"
+  grep -v '^#' untimed.csv >untimed_rows.txt
+  cmp -s untimed_rows.txt whole_rows.txt || fail "rows differ without timings: $(diff untimed_rows.txt whole_rows.txt | head -4)"
+}
+
 case_iteration_cap_exit_1_with_checkpoint() {
   make_start
   compress --phi 0.45 --checkpoint run.chk --stop-after-steps 1 >/dev/null || fail "first part"
