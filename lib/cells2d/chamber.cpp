@@ -127,6 +127,7 @@ void ChamberRun::step() {
       ++divisions_;
     }
     if (cells_.size() != n) {
+      engine_->renumbered();  // a daughter took its parent's slot
       // New cells grow at their own rates (feedback reaches them at the next update).
       growth_factor_.resize(cells_.size());
       for (std::size_t i = 0; i < cells_.size(); ++i) growth_factor_[i] = std::exp(cells_[i].rate * dt_);
@@ -175,6 +176,7 @@ void ChamberRun::step() {
     }
     cells_.resize(out), growth_factor_.resize(out), fresh_.resize(3 * out);
     integrator_->compact(keep);
+    engine_->renumbered();
   }
   if (steps_ >= next_rate_update_) update_rates();
 }

@@ -25,8 +25,7 @@ double ContactEngine::evaluate_with(const std::vector<Cell>& cells, double* forc
     const int ci = i >> 1;
     const double xi = p[3 * i], yi = p[3 * i + 1], ri = radius_[i];
     double fx = 0, fy = 0, torque = 0;
-    for (int j : list_.neighbours_of(i)) {
-      if (j <= i || (j >> 1) == ci) continue;
+    for (int j : candidates_of(i)) {
       const Eigen::Vector2d d = domain_.separation(Eigen::Vector2d(xi - p[3 * j], yi - p[3 * j + 1]));
       const double contact = ri + radius_[j], reach = contact + range, r2 = d[0] * d[0] + d[1] * d[1];
       if (r2 >= reach * reach || r2 == 0) continue;

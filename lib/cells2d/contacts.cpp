@@ -23,7 +23,7 @@ neighbours::Box planar_box(const Domain& d) {
 
 ContactEngine::ContactEngine(const Domain& domain, const ContactLawStyle& law, const LawParameters& parameters,
                              double skin)
-    : domain_(domain), law_(&law), parameters_(parameters), range_(law.range(parameters)),
+    : domain_(domain), law_(&law), parameters_(parameters), range_(law.range(parameters)), skin_(skin),
       list_(planar_box(domain), kCutoff + range_, skin) {
   if (!(range_ >= 0) || !std::isfinite(range_)) throw UsageError("cells2d: a contact law's range must be finite and >= 0");
 }
@@ -48,15 +48,46 @@ void ContactEngine::place_lobes(const std::vector<Cell>& cells) {
       lobes_(static_cast<Eigen::Index>(l), 1) = c.y + offset_y_[l];
     }
   }
+  // Rebuild when a lobe has moved or grown by a quarter of the skin since the pairs were built.
+  bool stale = pairs_stale_ || built_at_.rows() != lobes_.rows();
+  const double quarter = 0.25 * skin_, quarter2 = quarter * quarter;
+  for (std::size_t l = 0; !stale && l < 2 * n; ++l) {
+    const auto r = static_cast<Eigen::Index>(l);
+    const double dx = lobes_(r, 0) - built_at_(r, 0), dy = lobes_(r, 1) - built_at_(r, 1);
+    stale = dx * dx + dy * dy > quarter2 || radius_[l] - built_radius_[l] > quarter;
+  }
+  if (!stale) return;
   // The list's build is parallel; for colonies of this size a team's wake-ups and barriers
   // cost more than the build (measured: half the run time on a busy machine), so it runs on
   // one thread.
-  if (list_.needs_rebuild(lobes_)) {
-    const int threads = omp_get_max_threads();
-    if (n < kSerialBuildCells && threads > 1) omp_set_num_threads(1);
-    list_.build(lobes_);
-    if (n < kSerialBuildCells && threads > 1) omp_set_num_threads(threads);
+  const int threads = omp_get_max_threads();
+  if (n < kSerialBuildCells && threads > 1) omp_set_num_threads(1);
+  list_.build(lobes_);
+  if (n < kSerialBuildCells && threads > 1) omp_set_num_threads(threads);
+  build_pairs();
+}
+
+void ContactEngine::build_pairs() {
+  const int lobes = static_cast<int>(radius_.size());
+  pair_start_.assign(static_cast<std::size_t>(lobes) + 1, 0);
+  pair_j_.clear();
+  // A pair can touch before the next rebuild if it is within reach plus the skin now (each lobe
+  // moves or grows by at most a quarter skin), plus the list's own margin for a strain change.
+  const double margin = skin_ + (kCutoff - 1.0);
+  for (int i = 0; i < lobes; ++i) {
+    pair_start_[static_cast<std::size_t>(i)] = static_cast<int>(pair_j_.size());
+    const Eigen::Vector2d pi(lobes_(i, 0), lobes_(i, 1));
+    for (int j : list_.neighbours_of(i)) {
+      if (j <= i || (j >> 1) == (i >> 1)) continue;
+      const Eigen::Vector2d d = domain_.separation(pi - Eigen::Vector2d(lobes_(j, 0), lobes_(j, 1)));
+      const double reach = radius_[static_cast<std::size_t>(i)] + radius_[static_cast<std::size_t>(j)] + range_ + margin;
+      if (d.squaredNorm() < reach * reach) pair_j_.push_back(j);
+    }
   }
+  pair_start_[static_cast<std::size_t>(lobes)] = static_cast<int>(pair_j_.size());
+  built_at_ = lobes_;
+  built_radius_ = radius_;
+  pairs_stale_ = false;
 }
 
 double ContactEngine::evaluate(const std::vector<Cell>& cells, double* force) {

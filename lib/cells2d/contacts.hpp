@@ -4,11 +4,14 @@
 // periodic (Chapter 3) or not (the walls of a chamber are a separate term), optionally with
 // Lees-Edwards images for simple shear. Shared by every model built on lib/cells2d.
 //
-// The lobe pairs come from a Verlet list over the lobe centres (lib/neighbours), rebuilt only
-// when a lobe has moved more than half the skin since the last build, so a minimisation pays
-// for the neighbour search a few times, not at every force evaluation. The force loop is a
-// template instantiated per contact law. Serial and deterministic: a sweep runs many
-// colonies in parallel instead.
+// The lobe pairs come from a Verlet list over the lobe centres (lib/neighbours), kept as a half
+// list of the pairs that can touch before the next rebuild: other cell, j > i, closer than
+// their radii plus the law's range and the skin. It is rebuilt when a lobe has moved more than a
+// quarter of the skin, or grown by more than a quarter of it, since the build (so two lobes can
+// close the skin only together), so a minimisation or a chamber run pays for the neighbour
+// search a few times, not at every force evaluation. The force loop is a template instantiated
+// per contact law; it visits the pairs in the full list's order, so the half list changes no
+// bit of the sums. Serial and deterministic: a sweep runs many colonies in parallel instead.
 #include "cells2d/cell.hpp"
 #include "cells2d/contact_law.hpp"
 #include "core/minimum_image.hpp"
@@ -18,6 +21,7 @@
 
 #include <cmath>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace cmp::cells2d {
@@ -64,8 +68,12 @@ class ContactEngine {
   // The law's energy and force of an overlap, with this engine's parameters.
   double pair_energy(double overlap) const { return law_->energy(overlap, parameters_); }
   double pair_force(double overlap) const { return law_->force(overlap, parameters_); }
-  // Changes the Lees-Edwards strain (by at most ~1e-3: the list keeps a margin for it).
-  void set_shear(double strain) { domain_.shear = strain; }
+  // Changes the Lees-Edwards strain (by at most ~1e-3: the list keeps a margin for it); the pairs
+  // are found anew at the next evaluation.
+  void set_shear(double strain) {
+    domain_.shear = strain;
+    pairs_stale_ = true;
+  }
 
   // Energy V [k sigma^2]; force (3 per cell, 3 * cells.size()) receives F_x, F_y [k sigma]
   // and the torque T = -dV/dtheta [k sigma^2] of every cell. The hot path.
@@ -79,6 +87,15 @@ class ContactEngine {
   void for_each_contact(const std::vector<Cell>& cells, F&& f);
 
   long list_builds() const { return list_.builds(); }
+  // The cells were renumbered (a cell removed or inserted without changing their count): find
+  // the pairs anew at the next evaluation.
+  void renumbered() { pairs_stale_ = true; }
+  // The pairs that may interact before the next rebuild: for lobe i, pair_j_[pair_start_[i] ..
+  // pair_start_[i + 1]).
+  std::span<const int> candidates_of(int i) const {
+    return {pair_j_.data() + pair_start_[static_cast<std::size_t>(i)],
+            pair_j_.data() + pair_start_[static_cast<std::size_t>(i) + 1]};
+  }
 
   // The lobes as last placed by evaluate, energy or for_each_contact: how many, their centres,
   // radii and offsets from their cell's centre of mass (what walls need, without recomputing the
@@ -100,11 +117,19 @@ class ContactEngine {
   template <class Law>
   double evaluate_with(const std::vector<Cell>& cells, double* force) const;
 
+  // The half list from a fresh Verlet list.
+  void build_pairs();
+
   Domain domain_;
   const ContactLawStyle* law_;
   LawParameters parameters_;
   double range_;  // law_->range(parameters_)
+  double skin_;
   neighbours::NeighbourList list_;
+  std::vector<int> pair_start_, pair_j_;
+  mesh::VertexMatrix built_at_;       // lobe centres when the pairs were built
+  std::vector<double> built_radius_;  // and their radii
+  bool pairs_stale_ = true;
   mesh::VertexMatrix lobes_;            // 2N by 3 (z = 0)
   std::vector<double> radius_;          // 2N lobe radii
   std::vector<double> offset_x_, offset_y_;  // 2N lobe centre - cell centre
@@ -118,8 +143,7 @@ void ContactEngine::for_each_contact(const std::vector<Cell>& cells, F&& f) {
   const int lobes = static_cast<int>(radius_.size());
   for (int i = 0; i < lobes; ++i) {
     const Eigen::Vector2d pi(lobes_(i, 0), lobes_(i, 1));
-    for (int j : list_.neighbours_of(i)) {
-      if (j <= i || (j >> 1) == (i >> 1)) continue;
+    for (int j : candidates_of(i)) {
       const Eigen::Vector2d d = domain_.separation(pi - Eigen::Vector2d(lobes_(j, 0), lobes_(j, 1)));
       const double contact = radius_[i] + radius_[j], reach = contact + range_, r2 = d.squaredNorm();
       if (r2 >= reach * reach || r2 == 0) continue;
