@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
 BENCH_PACKAGES := libplb-dev libopenmpi-dev
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures flow-figure shell-figures compress-figures run install clean clean-results
+.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures chamber-figures flow-figure shell-figures compress-figures run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -97,6 +97,10 @@ percolation-figure: deps all
 # Chapter 3 at small boxes (jam2d): Figs 3.1h, 3.2a, 3.3, S3.2 and the targets' table ($(OUT)/figures/).
 jam2d-figures: deps all
 	@scripts/figures/jam2d.sh $(BUILD) $(OUT)/figures
+# Chapter 2's chamber (jam2d chamber, avalanches): Figs 2.2b-e, S2.10, S2.11, S2.13, 2.4c and the
+# table beside the thesis's numbers, about 10 minutes on 2 cores (TIME, SWEEP_TIME; $(OUT)/figures/).
+chamber-figures: deps all
+	@scripts/figures/chamber.sh $(BUILD) $(OUT)/figures
 # The Chapter 5 chain on inflated jammed spheres: shellpack jam -> percolate -> lbflow -> kcfit,
 # kappa and tau_H against porosity with Eq. 5.8 and the tortuosity law, and the refinement M ($(OUT)/figures/).
 flow-figure: deps all

@@ -112,18 +112,26 @@ class ChamberWalls {
 
 template <class F>
 void ChamberWalls::touch(const Eigen::Vector2d& c, double radius, F&& f) const {
-  // Far from every wall: the common case, decided without the segments.
-  const double x0 = geometry_.outlet_left(), x1 = geometry_.outlet_right();
-  const bool near_outlet = c[0] > x0 - radius && c[0] < x1 + radius && c[1] < radius;
-  if (!near_outlet && c[0] > radius && c[0] < geometry_.width - radius && c[1] > radius &&
-      c[1] < geometry_.height - radius)
-    return;
-  for (const Segment& s : segments_) {
-    if (!projects_onto(s, c)) continue;
+  // Far from every wall: the common case, decided without the segments. Only a lobe within a
+  // radius of y = 0 (or below it) can touch the bottom walls, the outlet's edges or the
+  // channel; the side and top walls are half-planes, tested directly (the same arithmetic as
+  // (c - a) . normal, so the same bits) in the segments' order.
+  const double W = geometry_.width, H = geometry_.height;
+  const bool low = c[1] < radius;
+  if (!low && c[0] > radius && c[0] < W - radius && c[1] < H - radius) return;
+  const auto segment = [&](std::size_t k) {
+    const Segment& s = segments_[k];
+    if (!projects_onto(s, c)) return;
     // A centre behind a chamber wall is pushed back however deep (solid lies behind it).
     const double distance = (c - s.a).dot(s.normal), overlap = radius - distance;
     if (overlap > 0 && (!s.thin || distance > -radius)) f(overlap, s.normal, s.chamber);
-  }
+  };
+  if (low) segment(0);
+  if (W - c[0] < radius) f(radius - (W - c[0]), segments_[1].normal, true);
+  if (H - c[1] < radius) f(radius - (H - c[1]), segments_[2].normal, true);
+  if (c[0] < radius) f(radius - c[0], segments_[3].normal, true);
+  if (!low) return;
+  for (std::size_t k = 4; k < segments_.size(); ++k) segment(k);
   for (const Corner& k : corners_) {
     bool in_band = false;
     for (int s : k.segments)

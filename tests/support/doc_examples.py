@@ -30,7 +30,7 @@ COMMAND_WORDS = PROGRAMS + ("make", "gnuplot", "salloc", "parallel")
 # make targets that the small size runs as `make -n` (their recipes are whole pipelines that
 # other tests run piece by piece); the study's targets run for real, at STUDY=tiny.
 DRY_MAKE_SMALL = ("run", "test", "jamming-figure", "shell-figures", "compress-figures",
-                  "flow-figure", "percolation-figure", "jam2d-figures", "bench", "tables")
+                  "flow-figure", "percolation-figure", "jam2d-figures", "chamber-figures", "bench", "tables")
 STUDY_SIZE_VARIABLES = ("STUDY", "N", "SEEDS", "VERTICES", "PHI", "DELTA", "FLOW_DELTA",
                         "REFINE", "FLOW_N", "FLOW_SEEDS")
 
@@ -56,6 +56,7 @@ SMALL_REWRITES = [
     (re.compile(r"(--phi\s+)([0-9.]+):([0-9.]+):([0-9.]+)"), _shrink_range),
     (re.compile(r"(--dphi\s+)([0-9.]+):([0-9.]+):([0-9.]+)"), _shrink_range),
     (re.compile(r"(--box\s+)(\d+)"), lambda m: f"{m.group(1)}{min(int(m.group(2)), 6)}"),
+    (re.compile(r"(--time\s+)([0-9.]+)"), lambda m: f"{m.group(1)}{min(float(m.group(2)), 2):g}"),
 ]
 
 

@@ -76,6 +76,13 @@ case_jam2d() {
   run "$jam2d" sweep --box 4 --seeds 1:3 --dphi 0,0.02 --P0 inf,0.001 -q >sweep.csv
 }
 
+case_jam2d_chamber() {
+  run "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 4 --every 0.05 --frame-every 1 --seed 3 -o run.xyz -q >series.csv
+  run "$jam2d" chamber --width 4 --height 6 --mobility 1e3 --time 3 --every 0.05 --seed 2 --P0 0.05 --contact sticky \
+    --attraction 0.05 --integrator euler -q >feedback.csv
+  run "$jam2d" avalanches series.csv --distribution dist.csv -o drops.csv
+}
+
 # The hashes of every file the case wrote (its stderr log aside), compared or recorded.
 check_hashes() {
   local case=$1 want="$src/tests/data/golden/$1.txt"
