@@ -105,12 +105,13 @@ double default_vertex_radius(double thickness, double max_circumradius) {
   return std::max(thickness, 0.75 * max_circumradius);
 }
 
-void run_compress_job(const CompressJob& job, const std::string& provenance_now) {
-  using clock = std::chrono::steady_clock;
-  // Inputs, checked before any work.
-  const auto spheres = shell::read_start_packing(job.packing_path);
-  const auto off = io::read_off(job.mesh_path);
-  const auto cell = shell::normalised_cell(mesh::TriMesh{off.V, off.F}, job.mesh_path);
+namespace {
+
+// The job's options with the contact model completed: the contact takes the shells' material,
+// the vertex radius and contact distance their defaults (which need the mesh and the sphere
+// sizes), and shells touch each other.
+shell::CompressionOptions resolved_options(const CompressJob& job, const io::SpherePackingFrame& spheres,
+                                           const mesh::TriMesh& cell) {
   shell::CompressionOptions o = job.run;
   auto& m = o.model;
   m.contact.youngs_modulus = m.material.youngs_modulus;
@@ -121,15 +122,27 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                 : default_vertex_radius(m.material.thickness, shell::max_circumradius(cell) * largest);
   m.contact.contact_distance = job.contact_distance > 0 ? job.contact_distance : m.material.thickness;
   m.shell_contacts = true;
+  return o;
+}
+
+// The shells at the jammed spheres: each sized so that, inflated at Pi_0, it fills its sphere's
+// envelope; this far apart (the contact's reach) they start free of contact.
+shell::ShellPacking start_packing(const CompressJob& job, const io::SpherePackingFrame& spheres,
+                                  const mesh::TriMesh& cell, const shell::CompressionOptions& o) {
+  const auto& m = o.model;
   shell::ShellModel inflate = m;
   inflate.load.turgor = o.turgor0;
   const double rest_diameter = shell::rest_diameter_for_inflated(cell, inflate, o.relax);
-  // The jammed spheres become the shells' envelopes: the shells, this far apart, start free of contact.
   const double reach = m.shell_contact_style == "hertz-faces" ? m.contact.contact_distance : 2.0 * m.contact.vertex_radius;
-  shell::Compression run(shell::place_shells(spheres, cell, rest_diameter, reach, job.seed), o);
-  const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
+  return shell::place_shells(spheres, cell, rest_diameter, reach, job.seed);
+}
 
-  Fnv1a fp;  // what defines the shells: a checkpoint of other inputs is refused
+// What defines the shells (the checkpoint records it): a resume with other inputs is refused
+// rather than continuing someone else's state.
+std::uint64_t shells_fingerprint(const CompressJob& job, const io::SpherePackingFrame& spheres,
+                                 const mesh::TriMesh& cell, const shell::CompressionOptions& o) {
+  const auto& m = o.model;
+  Fnv1a fp;
   fp.bytes(spheres.centres.data(), sizeof(double) * static_cast<std::size_t>(spheres.centres.size()));
   fp.bytes(spheres.radii.data(), sizeof(double) * static_cast<std::size_t>(spheres.radii.size()));
   fp.bytes(spheres.box.data(), 3 * sizeof(double));
@@ -142,6 +155,75 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     fp.value(o.phi_start);
     fp.value(m.contact.wall_modulus);
   }
+  return fp.h;
+}
+
+// The columns of compress.csv and its rows as text (a checkpoint stores the rows as written,
+// so that a resumed run's table is the same bytes).
+struct CompressTable {
+  bool walls = false;    // wall_pressure_E, coverage, their ratio
+  bool timings = false;  // seconds
+  std::vector<std::string> header;
+
+  CompressTable(const std::vector<std::string>& term_names, bool walls_, bool timings_)
+      : walls(walls_), timings(timings_) {
+    header = {"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
+              "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
+              "asphericity_mean_d02", "delta_eps_mean", "volume_error", "energy_Ed3"};
+    for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
+    if (walls)
+      for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);
+    for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
+    if (timings) header.push_back("seconds");
+  }
+
+  // One row, its cells in the header's order.
+  std::string format_row(const shell::CompressionRow& r, double seconds) const {
+    const auto f = [](double v) { return io::format_number(v); };
+    std::string s = std::to_string(r.step);
+    for (double v : {r.phi, r.dphi, r.box_side, r.pressure, r.turgor_mean, r.turgor_cv, r.Z, r.dZ})
+      s += "," + f(v);
+    s += "," + std::to_string(r.contacts);
+    for (double v : {r.asphericity, r.delta_eps, r.volume_error, r.energy}) s += "," + f(v);
+    for (double e : r.term_energies) s += "," + f(e);
+    if (walls)
+      s += "," + f(r.wall_pressure) + "," + f(r.coverage) + "," +
+           (r.coverage > 0 ? f(r.wall_pressure / r.coverage) : std::string());  // empty while undefined
+    s += "," + f(r.relax.residual) + "," + std::to_string(r.relax.iterations) + "," +
+         std::to_string(r.relax.volume_updates) + "," + shell::relax_stop_name(r.relax.stop);
+    if (timings) s += "," + f(seconds);
+    return s;
+  }
+
+  // A row restored from a checkpoint has `seconds` when the run that wrote it had --timings,
+  // which a resume may add or drop: the row is brought to this run's columns (an empty
+  // `seconds` where its time is unknown, none where this run has no timings).
+  std::string restored_row(std::string row, std::uint64_t index, const std::string& checkpoint) const {
+    const std::size_t untimed_cells = header.size() - (timings ? 1 : 0);
+    const std::size_t cells = split_cells(row).size();
+    if (cells == untimed_cells && timings) return row + ",";
+    if (cells == untimed_cells + 1 && !timings) return row.substr(0, row.rfind(','));
+    if (cells == untimed_cells || cells == untimed_cells + 1) return row;
+    throw InputError(checkpoint, 0,
+                     fmt::format("row {} of the table has {} cells where this run has {} (or {} with --timings): "
+                                 "truncated or damaged checkpoint",
+                                 index, cells, untimed_cells, untimed_cells + 1));
+  }
+};
+
+}  // namespace
+
+void run_compress_job(const CompressJob& job, const std::string& provenance_now) {
+  using clock = std::chrono::steady_clock;
+  // Inputs, checked before any work.
+  const auto spheres = shell::read_start_packing(job.packing_path);
+  const auto off = io::read_off(job.mesh_path);
+  const auto cell = shell::normalised_cell(mesh::TriMesh{off.V, off.F}, job.mesh_path);
+  const shell::CompressionOptions o = resolved_options(job, spheres, cell);
+  const auto& m = o.model;
+  shell::Compression run(start_packing(job, spheres, cell, o), o);
+  const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
+  const std::uint64_t fingerprint = shells_fingerprint(job, spheres, cell, o);
 
   std::string provenance = provenance_now;
   std::vector<std::string> rows;
@@ -161,46 +243,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
   const std::string wall_name = std::isinf(m.contact.wall_modulus)
                                     ? std::string("rigid")
                                     : io::format_number(m.contact.wall_modulus / m.material.youngs_modulus);
-  const auto format_row = [&](const shell::CompressionRow& r, double seconds) {
-    const auto f = [](double v) { return io::format_number(v); };
-    std::string s = std::to_string(r.step);
-    for (double v : {r.phi, r.dphi, r.box_side, r.pressure, r.turgor_mean, r.turgor_cv, r.Z, r.dZ})
-      s += "," + f(v);
-    s += "," + std::to_string(r.contacts);
-    for (double v : {r.asphericity, r.delta_eps, r.volume_error, r.energy}) s += "," + f(v);
-    for (double e : r.term_energies) s += "," + f(e);
-    if (o.walls)
-      s += "," + f(r.wall_pressure) + "," + f(r.coverage) + "," +
-           (r.coverage > 0 ? f(r.wall_pressure / r.coverage) : std::string());  // empty while undefined
-    s += "," + f(r.relax.residual) + "," + std::to_string(r.relax.iterations) + "," +
-         std::to_string(r.relax.volume_updates) + "," + shell::relax_stop_name(r.relax.stop);
-    if (job.timings) s += "," + f(seconds);
-    return s;
-  };
-
-  // The table's columns; format_row writes them in this order.
-  std::vector<std::string> header{"step",   "phi",       "dphi",       "box_side_d0",   "pressure_E",
-                                  "turgor_mean_P0", "turgor_cv", "Z", "dZ", "contacts",
-                                  "asphericity_mean_d02", "delta_eps_mean", "volume_error", "energy_Ed3"};
-  for (const auto& t : term_names) header.push_back("energy_" + t + "_Ed3");
-  if (o.walls)
-    for (const char* c : {"wall_pressure_E", "coverage", "wall_pressure_over_coverage_E"}) header.push_back(c);
-  for (const char* c : {"residual", "iterations", "volume_updates", "stop"}) header.push_back(c);
-  if (job.timings) header.push_back("seconds");
-  // A row restored from a checkpoint has `seconds` when the run that wrote it had --timings,
-  // which a resume may add or drop: the row is brought to this run's columns (an empty
-  // `seconds` where its time is unknown, none where this run has no timings).
-  const std::size_t untimed_cells = header.size() - (job.timings ? 1 : 0);
-  const auto restored_row = [&](std::string row, std::uint64_t index) {
-    const std::size_t cells = split_cells(row).size();
-    if (cells == untimed_cells && job.timings) return row + ",";
-    if (cells == untimed_cells + 1 && !job.timings) return row.substr(0, row.rfind(','));
-    if (cells == untimed_cells || cells == untimed_cells + 1) return row;
-    throw InputError(job.resume, 0,
-                     fmt::format("row {} of the table has {} cells where this run has {} (or {} with --timings): "
-                                 "truncated or damaged checkpoint",
-                                 index, cells, untimed_cells, untimed_cells + 1));
-  };
+  const CompressTable table(term_names, o.walls, job.timings);
 
   // The checkpoint: the state after the last converged step.
   std::optional<shell::CompressionState> saved;
@@ -209,7 +252,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     if (job.checkpoint.empty() || !saved) return;
     io::CheckpointOutput out(job.checkpoint, kMagic, job.checkpoint_args);
     auto& s = out.stream();
-    io::put(s, fp.h);
+    io::put(s, fingerprint);
     io::put(s, provenance);
     io::put(s, saved->step);
     for (int a = 0; a < 3; ++a) io::put(s, saved->box[a]);
@@ -231,7 +274,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     auto in = io::open_checkpoint(job.resume);
     io::read_checkpoint_header(in, job.resume, kMagic, kWhat, true);
     io::CheckpointReader r(in, job.resume);
-    if (r.get<std::uint64_t>() != fp.h)
+    if (r.get<std::uint64_t>() != fingerprint)
       throw InputError(job.resume, 0,
                        "the checkpoint belongs to another run (its sphere packing, cell mesh, seed or vertex radius "
                        "differ from these)");
@@ -247,7 +290,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
     st.volume0 = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
     const auto n_rows = r.get<std::uint64_t>();
     if (n_rows > max_rows) throw InputError(job.resume, 0, "truncated or damaged checkpoint");
-    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(restored_row(r.get_string(1 << 20), k));
+    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(table.restored_row(r.get_string(1 << 20), k, job.resume));
     try {
       run.restore(st);
     } catch (const std::invalid_argument&) {
@@ -263,7 +306,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                          "iterations (raise --fire-max-iterations)",
                                          shell::relax_stop_name(row0.relax.stop), io::format_number(row0.relax.residual),
                                          row0.relax.iterations));
-    rows.push_back(format_row(row0, std::chrono::duration<double>(clock::now() - step_start).count()));
+    rows.push_back(table.format_row(row0, std::chrono::duration<double>(clock::now() - step_start).count()));
   }
   const auto& targets = run.options().targets;  // phi (a --dphi list resolved by start/restore)
   for (double t : targets)
@@ -297,7 +340,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
       csv.meta("walls", wall_name);
       csv.meta("phi_start", io::format_number(o.phi_start));
     }
-    csv.header(header);
+    csv.header(table.header);
     for (const auto& r : rows) csv.row(split_cells(r));
     csv_out->commit();
   };
@@ -384,7 +427,7 @@ void run_compress_job(const CompressJob& job, const std::string& provenance_now)
                                        "--fire-max-iterations)"));
     }
     check_penetration(row);
-    rows.push_back(format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
+    rows.push_back(table.format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
     if (row.target) write_packing(*row.target);
     remember();
     bar.update(std::min(1.0, (run.phi() - phi_from) / span));
