@@ -211,239 +211,318 @@ struct CompressTable {
   }
 };
 
-}  // namespace
+// Rows a checkpoint may hold before it is taken for damaged (a cut length read as a count).
+constexpr std::size_t kMaxRows = 100'000'000;
 
-void run_compress_job(const CompressJob& job, const std::string& provenance_now) {
+// One run of `shellpack compress`: the protocol (shell::Compression) and what the job keeps
+// beside it (the table's rows, the last converged state, the provenance, the progress bar),
+// with the outputs written from them. run_compress_job calls the methods in the order of a
+// run; every way out of a box step saves the checkpoint first, so that a stopped or failed run
+// continues with --resume from its last converged step.
+class CompressRun {
+ public:
   using clock = std::chrono::steady_clock;
-  // Inputs, checked before any work.
-  const auto spheres = shell::read_start_packing(job.packing_path);
-  const auto off = io::read_off(job.mesh_path);
-  const auto cell = shell::normalised_cell(mesh::TriMesh{off.V, off.F}, job.mesh_path);
-  const shell::CompressionOptions o = resolved_options(job, spheres, cell);
-  const auto& m = o.model;
-  shell::Compression run(start_packing(job, spheres, cell, o), o);
-  const long n_shells = static_cast<long>(run.packing().shell_vertex_counts.size());
-  const std::uint64_t fingerprint = shells_fingerprint(job, spheres, cell, o);
 
-  std::string provenance = provenance_now;
-  std::vector<std::string> rows;
-  const std::size_t max_rows = 100'000'000;
-  cli::ProgressBar bar("compressing", 1.0, job.quiet);
-  long iterations_note = 0;
-  const auto note = [&](double residual) {
-    bar.set_note(fmt::format("phi {:.4f}, step {}, residual {:.2e}", run.phi(), run.step_index(), residual));
-  };
-  const shell::RelaxProgress progress = [&](long iterations, double residual) {
-    iterations_note = iterations;
-    note(residual);
-    return true;
-  };
-  const auto term_names = run.term_names();
-  // The walls: "rigid" or their Young's modulus E_w [E].
-  const std::string wall_name = std::isinf(m.contact.wall_modulus)
-                                    ? std::string("rigid")
-                                    : io::format_number(m.contact.wall_modulus / m.material.youngs_modulus);
-  const CompressTable table(term_names, o.walls, job.timings);
+  CompressRun(const CompressJob& job, const std::string& provenance, const io::SpherePackingFrame& spheres,
+              const mesh::TriMesh& cell)
+      : job_(job),
+        o_(resolved_options(job, spheres, cell)),
+        run_(start_packing(job, spheres, cell, o_), o_),
+        n_shells_(static_cast<long>(run_.packing().shell_vertex_counts.size())),
+        fingerprint_(shells_fingerprint(job, spheres, cell, o_)),
+        provenance_(provenance),
+        bar_("compressing", 1.0, job.quiet),
+        table_(run_.term_names(), o_.walls, job.timings),
+        // The walls: "rigid" or their Young's modulus E_w [E].
+        wall_name_(std::isinf(o_.model.contact.wall_modulus)
+                       ? std::string("rigid")
+                       : io::format_number(o_.model.contact.wall_modulus / o_.model.material.youngs_modulus)) {}
 
-  // The checkpoint: the state after the last converged step.
-  std::optional<shell::CompressionState> saved;
-  std::size_t saved_rows = 0;
-  const auto save = [&] {
-    if (job.checkpoint.empty() || !saved) return;
-    io::CheckpointOutput out(job.checkpoint, kMagic, job.checkpoint_args);
-    auto& s = out.stream();
-    io::put(s, fingerprint);
-    io::put(s, provenance);
-    io::put(s, saved->step);
-    for (int a = 0; a < 3; ++a) io::put(s, saved->box[a]);
-    io::put(s, static_cast<std::uint64_t>(saved->next_target));
-    io::put(s, saved->phi_jammed);
-    io::put(s, std::vector<double>(saved->x.data(), saved->x.data() + saved->x.size()));
-    io::put(s, saved->turgor);
-    io::put(s, saved->volume0);
-    io::put(s, static_cast<std::uint64_t>(saved_rows));
-    for (std::size_t k = 0; k < saved_rows; ++k) io::put(s, rows[k]);
-    out.commit();
-  };
-  const auto remember = [&] {
-    saved = run.state();
-    saved_rows = rows.size();
-  };
+  bool done() const { return run_.done(); }
 
-  if (!job.resume.empty()) {
-    auto in = io::open_checkpoint(job.resume);
-    io::read_checkpoint_header(in, job.resume, kMagic, kWhat, true);
-    io::CheckpointReader r(in, job.resume);
-    if (r.get<std::uint64_t>() != fingerprint)
-      throw InputError(job.resume, 0,
-                       "the checkpoint belongs to another run (its sphere packing, cell mesh, seed or vertex radius "
-                       "differ from these)");
-    provenance = r.get_string(1 << 20);
-    shell::CompressionState st;
-    st.step = r.get<long>();
-    for (int a = 0; a < 3; ++a) st.box[a] = r.get<double>();
-    st.next_target = r.get<std::uint64_t>();
-    st.phi_jammed = r.get<double>();
-    const auto x = r.get_vector<double>(static_cast<std::uint64_t>(run.system().x.size()));
-    st.x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
-    st.turgor = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
-    st.volume0 = r.get_vector<double>(static_cast<std::uint64_t>(n_shells));
-    const auto n_rows = r.get<std::uint64_t>();
-    if (n_rows > max_rows) throw InputError(job.resume, 0, "truncated or damaged checkpoint");
-    for (std::uint64_t k = 0; k < n_rows; ++k) rows.push_back(table.restored_row(r.get_string(1 << 20), k, job.resume));
-    try {
-      run.restore(st);
-    } catch (const std::invalid_argument&) {
-      throw InputError(job.resume, 0, "the checkpoint belongs to another run (a state of another size)");
-    }
-  }
-  auto step_start = clock::now();
-  if (job.resume.empty()) {
+  // A new run: the shells inflated at Pi_0 in the start box, the table's first row.
+  void start() {
+    const auto step_start = clock::now();
     note(0);
-    const auto row0 = run.start(progress);
+    const auto row0 = run_.start(progress());
     if (!row0.relax.converged())
       throw ComputationError(fmt::format("inflating the shells at Pi_0 stopped by {} at residual {} after {} FIRE "
                                          "iterations (raise --fire-max-iterations)",
                                          shell::relax_stop_name(row0.relax.stop), io::format_number(row0.relax.residual),
                                          row0.relax.iterations));
-    rows.push_back(table.format_row(row0, std::chrono::duration<double>(clock::now() - step_start).count()));
+    rows_.push_back(table_.format_row(row0, seconds_since(step_start)));
   }
-  const auto& targets = run.options().targets;  // phi (a --dphi list resolved by start/restore)
-  for (double t : targets)
-    if (t < run.phi_jammed() && job.resume.empty() && !o.walls)
-      throw UsageError(fmt::format("--phi: target {} is below the starting volume fraction phi_J = {} of these shells",
-                                   io::format_number(t), io::format_number(run.phi_jammed())));
-  remember();
-  const double phi_from = o.walls ? o.phi_start : run.phi_jammed();
-  const double span = std::max(targets.back() - phi_from, 1e-12);
-  bar.update(0);
 
-  std::optional<io::AtomicOutput> csv_out;
-  if (!job.csv.empty()) csv_out.emplace(job.csv);
-  const auto write_table = [&] {
-    if (!csv_out) return;
-    io::CsvWriter csv(csv_out->stream());
-    csv.meta("provenance", provenance);
-    csv.meta("units", "lengths in D0 (the inflated shell's volume-equivalent diameter), pressures and moduli in E "
-                      "(_E) or Pi_0 (_P0), energies in E D0^3 (_Ed3); residual = max |f_i| / (E t a), a the mean rest "
-                      "edge length; pressure = contact virial");
-    shell::write_model_meta(csv, m, "thickness");
-    csv.meta("P0", io::format_number(o.turgor0));
-    csv.meta("box_step", io::format_number(o.step));
-    csv.meta("relative_force_tolerance", io::format_number(o.relax.relative_tolerance));
-    csv.meta("volume_rule", shell::volume_rule_name(o.relax.volume_rule));
-    csv.meta("seed", std::to_string(job.seed));
-    csv.meta("shells", std::to_string(n_shells));
-    csv.meta("vertices_per_shell", std::to_string(run.packing().shell_vertex_counts.front()));
-    csv.meta("phi_J", io::format_number(run.phi_jammed()));
-    if (o.walls) {
-      csv.meta("walls", wall_name);
-      csv.meta("phi_start", io::format_number(o.phi_start));
+  // A resumed run: the state, provenance and rows saved by save(), refused when the checkpoint
+  // is of other inputs (its fingerprint, or a state of another size).
+  void restore() {
+    auto in = io::open_checkpoint(job_.resume);
+    io::read_checkpoint_header(in, job_.resume, kMagic, kWhat, true);
+    io::CheckpointReader r(in, job_.resume);
+    if (r.get<std::uint64_t>() != fingerprint_)
+      throw InputError(job_.resume, 0,
+                       "the checkpoint belongs to another run (its sphere packing, cell mesh, seed or vertex radius "
+                       "differ from these)");
+    provenance_ = r.get_string(1 << 20);
+    shell::CompressionState st;
+    st.step = r.get<long>();
+    for (int a = 0; a < 3; ++a) st.box[a] = r.get<double>();
+    st.next_target = r.get<std::uint64_t>();
+    st.phi_jammed = r.get<double>();
+    const auto x = r.get_vector<double>(static_cast<std::uint64_t>(run_.system().x.size()));
+    st.x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    st.turgor = r.get_vector<double>(static_cast<std::uint64_t>(n_shells_));
+    st.volume0 = r.get_vector<double>(static_cast<std::uint64_t>(n_shells_));
+    const auto n_rows = r.get<std::uint64_t>();
+    if (n_rows > kMaxRows) throw InputError(job_.resume, 0, "truncated or damaged checkpoint");
+    for (std::uint64_t k = 0; k < n_rows; ++k) rows_.push_back(table_.restored_row(r.get_string(1 << 20), k, job_.resume));
+    try {
+      run_.restore(st);
+    } catch (const std::invalid_argument&) {
+      throw InputError(job_.resume, 0, "the checkpoint belongs to another run (a state of another size)");
     }
-    csv.header(table.header);
-    for (const auto& r : rows) csv.row(split_cells(r));
-    csv_out->commit();
-  };
+  }
+
+  // Periodic targets must lie above phi_J, known only once the shells are inflated (a resume
+  // may name targets the run has passed: those are skipped; the walls start below phi_J).
+  void check_targets() const {
+    for (double t : run_.options().targets)  // phi (a --dphi list resolved by start/restore)
+      if (t < run_.phi_jammed() && job_.resume.empty() && !o_.walls)
+        throw UsageError(fmt::format("--phi: target {} is below the starting volume fraction phi_J = {} of these shells",
+                                     io::format_number(t), io::format_number(run_.phi_jammed())));
+  }
+
+  // Before the first box step: the start is the state to save, the bar measures phi from it to
+  // the last target, and the table's file is opened (it is written once, at the end).
+  void begin_steps() {
+    remember();
+    phi_from_ = o_.walls ? o_.phi_start : run_.phi_jammed();
+    span_ = std::max(run_.options().targets.back() - phi_from_, 1e-12);
+    bar_.update(0);
+    if (!job_.csv.empty()) csv_out_.emplace(job_.csv);
+    last_checkpoint_ = clock::now();
+  }
+
+  // One box step: relaxed, checked, recorded (a row, the packing at a target) and remembered
+  // as the state to save; saved every checkpoint_every seconds.
+  void step() {
+    const auto step_start = clock::now();
+    const shell::CompressionRow row = advance();
+    fail_unless_converged(row);
+    check_penetration(row);
+    rows_.push_back(table_.format_row(row, seconds_since(step_start)));
+    if (row.target) write_packing(*row.target);
+    remember();
+    bar_.update(std::min(1.0, (run_.phi() - phi_from_) / span_));
+    note(row.relax.residual);
+    if (seconds_since(last_checkpoint_) >= job_.checkpoint_every) {
+      save();
+      last_checkpoint_ = clock::now();
+    }
+  }
+
+  // --stop-after-steps: the checkpoint and the table so far, and how to continue.
+  void stop_as_asked(long steps) {
+    save();
+    bar_.finish();
+    if (!job_.quiet)
+      std::cerr << "shellpack: stopped after " << steps << " box steps as asked (phi " << run_.phi() << ")"
+                << (job_.checkpoint.empty() ? "" : "; continue with shellpack compress --resume " + job_.checkpoint)
+                << "\n";
+    write_table();
+  }
+
+  // The last target reached: the final checkpoint, the table and the summary.
+  void finish() {
+    save();
+    bar_.finish();
+    write_table();
+    if (!job_.quiet)
+      std::cerr << "shellpack: " << run_.step_index() << " box steps from phi_J " << io::format_number(run_.phi_jammed())
+                << " to " << io::format_number(run_.phi()) << "\n";
+  }
+
+ private:
+  static double seconds_since(clock::time_point t) { return std::chrono::duration<double>(clock::now() - t).count(); }
+
+  void note(double residual) {
+    bar_.set_note(fmt::format("phi {:.4f}, step {}, residual {:.2e}", run_.phi(), run_.step_index(), residual));
+  }
+  // The relaxations report to the bar's note as they go.
+  shell::RelaxProgress progress() {
+    return [this](long, double residual) {
+      note(residual);
+      return true;
+    };
+  }
+
+  // A relaxation that throws leaves the last converged state saved.
+  shell::CompressionRow advance() {
+    try {
+      return run_.advance(progress());
+    } catch (const ComputationError&) {
+      save();
+      throw;
+    }
+  }
+
+  void fail_unless_converged(const shell::CompressionRow& row) {
+    if (row.relax.converged()) return;
+    save();
+    bar_.finish();
+    throw ComputationError(fmt::format(
+        "step {} (phi {}): the relaxation stopped by {} at residual {} (tolerance {}) after {} FIRE iterations{}",
+        row.step, io::format_number(row.phi), shell::relax_stop_name(row.relax.stop),
+        io::format_number(row.relax.residual), io::format_number(o_.relax.relative_tolerance), row.relax.iterations,
+        job_.checkpoint.empty() ? std::string()
+                                : "; the checkpoint " + job_.checkpoint +
+                                      " holds the last converged step (continue with --resume, e.g. with a higher "
+                                      "--fire-max-iterations)"));
+  }
+
   // After every step: a vertex inside another shell ends the run (the checkpoint keeps the last
   // step without one).
-  const auto check_penetration = [&](const shell::CompressionRow& row) {
-    if (!job.check_penetration) return;
-    const auto& s = run.system();
-    const auto found = shell::penetrations(s.x, s.rest().F, s.shells(), run.box(), run.packing().periodic);
+  void check_penetration(const shell::CompressionRow& row) {
+    if (!job_.check_penetration) return;
+    const auto& s = run_.system();
+    const auto found = shell::penetrations(s.x, s.rest().F, s.shells(), run_.box(), run_.packing().periodic);
     if (found.empty()) return;
     save();
-    bar.finish();
+    bar_.finish();
     throw ComputationError(fmt::format(
         "step {} (phi {}): vertex {} of shell {} lies inside shell {} ({} vertices inside other shells): the shells "
         "pass through each other; {}{}",
         row.step, io::format_number(row.phi), found.front().vertex, found.front().vertex_shell, found.front().shell,
-        found.size(), penetration_advice(s, m),
-        job.checkpoint.empty() ? "" : "; the checkpoint " + job.checkpoint + " holds the step before"));
-  };
-  const auto write_packing = [&](std::size_t target) {
-    const double phi = targets[target];
-    const auto& s = run.system();
-    if (job.output_pattern.empty()) return;
+        found.size(), penetration_advice(s, o_.model),
+        job_.checkpoint.empty() ? "" : "; the checkpoint " + job_.checkpoint + " holds the step before"));
+  }
+
+  // The state after the last converged step, and the rows up to it: what save() writes.
+  void remember() {
+    saved_ = run_.state();
+    saved_rows_ = rows_.size();
+  }
+
+  // The checkpoint (restore() reads it back in this order; its layout is the file format).
+  void save() {
+    if (job_.checkpoint.empty() || !saved_) return;
+    io::CheckpointOutput out(job_.checkpoint, kMagic, job_.checkpoint_args);
+    auto& s = out.stream();
+    io::put(s, fingerprint_);
+    io::put(s, provenance_);
+    io::put(s, saved_->step);
+    for (int a = 0; a < 3; ++a) io::put(s, saved_->box[a]);
+    io::put(s, static_cast<std::uint64_t>(saved_->next_target));
+    io::put(s, saved_->phi_jammed);
+    io::put(s, std::vector<double>(saved_->x.data(), saved_->x.data() + saved_->x.size()));
+    io::put(s, saved_->turgor);
+    io::put(s, saved_->volume0);
+    io::put(s, static_cast<std::uint64_t>(saved_rows_));
+    for (std::size_t k = 0; k < saved_rows_; ++k) io::put(s, rows_[k]);
+    out.commit();
+  }
+
+  // compress.csv: the run's parameters as `# key=value` lines, then every row so far.
+  void write_table() {
+    if (!csv_out_) return;
+    const auto& m = o_.model;
+    io::CsvWriter csv(csv_out_->stream());
+    csv.meta("provenance", provenance_);
+    csv.meta("units", "lengths in D0 (the inflated shell's volume-equivalent diameter), pressures and moduli in E "
+                      "(_E) or Pi_0 (_P0), energies in E D0^3 (_Ed3); residual = max |f_i| / (E t a), a the mean rest "
+                      "edge length; pressure = contact virial");
+    shell::write_model_meta(csv, m, "thickness");
+    csv.meta("P0", io::format_number(o_.turgor0));
+    csv.meta("box_step", io::format_number(o_.step));
+    csv.meta("relative_force_tolerance", io::format_number(o_.relax.relative_tolerance));
+    csv.meta("volume_rule", shell::volume_rule_name(o_.relax.volume_rule));
+    csv.meta("seed", std::to_string(job_.seed));
+    csv.meta("shells", std::to_string(n_shells_));
+    csv.meta("vertices_per_shell", std::to_string(run_.packing().shell_vertex_counts.front()));
+    csv.meta("phi_J", io::format_number(run_.phi_jammed()));
+    if (o_.walls) {
+      csv.meta("walls", wall_name_);
+      csv.meta("phi_start", io::format_number(o_.phi_start));
+    }
+    csv.header(table_.header);
+    for (const auto& r : rows_) csv.row(split_cells(r));
+    csv_out_->commit();
+  }
+
+  // The packing OFF at a target (-o with {phi}), its parameters as `# key=value` comments
+  // (docs/formats.md).
+  void write_packing(std::size_t target) {
+    const double phi = run_.options().targets[target];
+    const auto& s = run_.system();
+    if (job_.output_pattern.empty()) return;
+    const auto& m = o_.model;
     io::PackingInfo info;
-    info.box = run.box();
-    info.periodic = run.packing().periodic;
-    info.shell_vertex_counts = run.packing().shell_vertex_counts;
+    info.box = run_.box();
+    info.periodic = run_.packing().periodic;
+    info.shell_vertex_counts = run_.packing().shell_vertex_counts;
     const auto* p = s.pressure();
-    std::vector<std::string> comments{provenance,
-                                            "D0=1",
-                                            "phi=" + io::format_number(phi),
-                                            "E=" + io::format_number(m.material.youngs_modulus),
-                                            "nu=" + io::format_number(m.material.poisson_ratio),
-                                            "thickness=" + io::format_number(m.material.thickness),
-                                            "vertex_radius=" + io::format_number(m.contact.vertex_radius),
-                                            "contact=" + m.shell_contact_style,
-                                            "P0=" + io::format_number(o.turgor0),
-                                            "bending=" + (m.bending.empty() ? std::string("none") : m.bending),
-                                            "stretching=" + m.stretching,
-                                            "pressure_model=" + m.pressure,
-                                            "step=" + std::to_string(run.step_index()),
-                                            "turgor=" + join(p->turgors()),
-                                            "volume0=" + join(p->target_volumes())};
+    std::vector<std::string> comments{provenance_,
+                                      "D0=1",
+                                      "phi=" + io::format_number(phi),
+                                      "E=" + io::format_number(m.material.youngs_modulus),
+                                      "nu=" + io::format_number(m.material.poisson_ratio),
+                                      "thickness=" + io::format_number(m.material.thickness),
+                                      "vertex_radius=" + io::format_number(m.contact.vertex_radius),
+                                      "contact=" + m.shell_contact_style,
+                                      "P0=" + io::format_number(o_.turgor0),
+                                      "bending=" + (m.bending.empty() ? std::string("none") : m.bending),
+                                      "stretching=" + m.stretching,
+                                      "pressure_model=" + m.pressure,
+                                      "step=" + std::to_string(run_.step_index()),
+                                      "turgor=" + join(p->turgors()),
+                                      "volume0=" + join(p->target_volumes())};
     if (m.shell_contact_style == "hertz-faces")
       comments.push_back("contact_distance=" + io::format_number(m.contact.contact_distance));
-    if (o.walls) comments.push_back("walls=" + wall_name);
+    if (o_.walls) comments.push_back("walls=" + wall_name_);
     mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(s.x.data(), s.vertex_count(), 3);
-    io::write_off(cli::expand_pattern(job.output_pattern, "phi", io::format_number(phi)), V, s.rest().F, comments, &info);
-  };
+    io::write_off(cli::expand_pattern(job_.output_pattern, "phi", io::format_number(phi)), V, s.rest().F, comments,
+                  &info);
+  }
 
-  auto last_checkpoint = clock::now();
-  long steps_here = 0;
-  while (!run.done()) {
+  const CompressJob& job_;
+  const shell::CompressionOptions o_;  // the job's, the contact model completed
+  shell::Compression run_;
+  const long n_shells_;
+  const std::uint64_t fingerprint_;
+  std::string provenance_;  // this command's, or the checkpoint's on a resume
+  std::vector<std::string> rows_;
+  cli::ProgressBar bar_;
+  const CompressTable table_;
+  const std::string wall_name_;
+  std::optional<shell::CompressionState> saved_;  // the last converged step
+  std::size_t saved_rows_ = 0;
+  double phi_from_ = 0, span_ = 1;  // the bar: phi from the start to the last target
+  std::optional<io::AtomicOutput> csv_out_;
+  clock::time_point last_checkpoint_;
+};
+
+}  // namespace
+
+void run_compress_job(const CompressJob& job, const std::string& provenance) {
+  // Inputs, checked before any work.
+  const auto spheres = shell::read_start_packing(job.packing_path);
+  const auto off = io::read_off(job.mesh_path);
+  const auto cell = shell::normalised_cell(mesh::TriMesh{off.V, off.F}, job.mesh_path);
+  CompressRun run(job, provenance, spheres, cell);
+  if (job.resume.empty())
+    run.start();
+  else
+    run.restore();
+  run.check_targets();
+  run.begin_steps();
+  for (long steps_here = 0; !run.done(); ++steps_here) {
     if (job.stop_after_steps > 0 && steps_here >= job.stop_after_steps) {
-      save();
-      bar.finish();
-      if (!job.quiet)
-        std::cerr << "shellpack: stopped after " << steps_here << " box steps as asked (phi " << run.phi() << ")"
-                  << (job.checkpoint.empty() ? "" : "; continue with shellpack compress --resume " + job.checkpoint)
-                  << "\n";
-      write_table();
+      run.stop_as_asked(steps_here);
       return;
     }
-    step_start = clock::now();
-    std::optional<shell::CompressionRow> attempt;
-    try {
-      attempt = run.advance(progress);
-    } catch (const ComputationError&) {
-      save();  // the last converged step
-      throw;
-    }
-    const auto& row = *attempt;
-    ++steps_here;
-    if (!row.relax.converged()) {
-      save();
-      bar.finish();
-      throw ComputationError(fmt::format(
-          "step {} (phi {}): the relaxation stopped by {} at residual {} (tolerance {}) after {} FIRE iterations{}",
-          row.step, io::format_number(row.phi), shell::relax_stop_name(row.relax.stop),
-          io::format_number(row.relax.residual), io::format_number(o.relax.relative_tolerance), row.relax.iterations,
-          job.checkpoint.empty() ? std::string()
-                                 : "; the checkpoint " + job.checkpoint +
-                                       " holds the last converged step (continue with --resume, e.g. with a higher "
-                                       "--fire-max-iterations)"));
-    }
-    check_penetration(row);
-    rows.push_back(table.format_row(row, std::chrono::duration<double>(clock::now() - step_start).count()));
-    if (row.target) write_packing(*row.target);
-    remember();
-    bar.update(std::min(1.0, (run.phi() - phi_from) / span));
-    note(row.relax.residual);
-    if (std::chrono::duration<double>(clock::now() - last_checkpoint).count() >= job.checkpoint_every) {
-      save();
-      last_checkpoint = clock::now();
-    }
+    run.step();
   }
-  (void)iterations_note;
-  save();
-  bar.finish();
-  write_table();
-  if (!job.quiet)
-    std::cerr << "shellpack: " << run.step_index() << " box steps from phi_J " << io::format_number(run.phi_jammed())
-              << " to " << io::format_number(run.phi()) << "\n";
+  run.finish();
 }
 
 }  // namespace cmp::packrun
