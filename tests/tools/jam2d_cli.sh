@@ -137,9 +137,13 @@ for column in ("radius", "cell", "lobe", "orientation", "force", "pressure", "co
 assert len(a) == 2 * (max(a.arrays["cell"]) + 1)
 assert len(frames[-1]) > len(frames[0])
 PY
-  # Same seed, same bytes (the provenance line aside).
-  "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 3 --every 0.5 --seed 2 -q >again.csv || fail "again"
-  cmp <(grep -v provenance series.csv) <(grep -v provenance again.csv) || fail "same seed, other bytes"
+  # Same seed, same bytes (the provenance line aside), on one thread or two.
+  OMP_NUM_THREADS=1 "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 3 --every 0.5 --seed 2 -q >one.csv ||
+    fail "one thread"
+  OMP_NUM_THREADS=2 "$jam2d" chamber --width 4 --height 5 --mobility 2e3 --time 3 --every 0.5 --seed 2 -q >two.csv ||
+    fail "two threads"
+  cmp <(grep -v provenance series.csv) <(grep -v provenance one.csv) || fail "same seed, other bytes"
+  cmp one.csv two.csv || fail "one thread and two give other bytes"
 }
 case_chamber_bad_options_all_at_once() {
   "$jam2d" chamber --width 4 --outlet 5 --mobility -1 --csv out.csv 2>stderr.txt
