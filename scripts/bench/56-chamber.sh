@@ -21,8 +21,8 @@ configs=(
   echo "case,integrator,mobility,P0,threads,load,cells,simulated,seconds,generations_per_second,minutes_for_500_generations"
   for c in "${configs[@]}"; do
     IFS='|' read -r name opts span <<<"$c"
-    "$jam2d" chamber --seed 1 $opts --time 6 --every 0.5 --csv '' --checkpoint "$work/$name.ckpt" -q
-    cells=$("$jam2d" chamber --seed 1 $opts --time 6 --every 0.5 --csv - --resume "$work/$name.ckpt" -q | tail -1 | cut -d, -f4)
+    "$jam2d" chamber --seed 1 $opts --time 6 --every 0.5 --csv "$work/$name.csv" --checkpoint "$work/$name.ckpt" -q
+    cells=$(tail -1 "$work/$name.csv" | cut -d, -f4)
     to=$(awk -v s="$span" 'BEGIN { print 6 + s }')
     for load in none busy; do
       for threads in 1 2; do
@@ -30,7 +30,7 @@ configs=(
         hog=
         if [ $load = busy ]; then sh -c 'while :; do :; done' & hog=$!; fi
         t0=$(date +%s%N)
-        OMP_NUM_THREADS=$threads "$jam2d" chamber --seed 1 $opts --time "$to" --every 0.5 --csv '' --resume "$work/$name.ckpt" -q
+        OMP_NUM_THREADS=$threads "$jam2d" chamber --seed 1 $opts --time "$to" --every 0.5 --csv /dev/null --resume "$work/$name.ckpt" -q
         t1=$(date +%s%N)
         [ -n "$hog" ] && kill "$hog"
         awk -v n="$name" -v o="$opts" -v th="$threads" -v l="$load" -v c="$cells" -v s="$span" -v ns=$((t1 - t0)) 'BEGIN {
