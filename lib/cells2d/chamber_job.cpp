@@ -9,6 +9,7 @@
 #include "io/atomic_output.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/csv.hpp"
+#include "io/parse_number.hpp"
 #include "io/xyz.hpp"
 
 #include <fmt/format.h>
@@ -78,6 +79,14 @@ void load(const ChamberJob& job, ChamberRun& run, Progress& p) {
   run.load(r);
 }
 
+// The k-th row's time, k * every to 12 significant digits: rows every 0.1 read 4.6, not
+// 4.6000000000000005 (the run itself steps to within dt of it).
+double scheduled_time(long k, double every) {
+  double t = 0;
+  io::try_parse_double(fmt::format("{:.12g}", static_cast<double>(k) * every), t);
+  return t;
+}
+
 }  // namespace
 
 void run_chamber_job(const ChamberJob& job) {
@@ -122,7 +131,7 @@ void run_chamber_job(const ChamberJob& job) {
     last_save = clock::now();
   };
   for (long k = progress.next_sample; k <= samples; ++k) {
-    const double t = std::stod(fmt::format("{:.12g}", static_cast<double>(k) * job.sample_every));
+    const double t = scheduled_time(k, job.sample_every);
     if (job.stop_after >= 0 && t > job.stop_after) {
       if (!job.checkpoint.empty()) checkpoint_now(k);
       bar.finish();
@@ -181,18 +190,20 @@ void run_avalanche_job(const AvalancheJob& o) {
   if (const auto* seed = t.find_meta("seed")) table.meta("seed", *seed);
   for (const char* key : {"mobility", "P0", "outlet", "attraction"})
     if (const auto* v = t.find_meta(key)) table.meta(key, *v);
-  table.meta("from", num(m.from));
-  table.meta("to", num(m.to));
-  table.meta("mean_pressure", num(m.mean_pressure));
-  table.meta("events", std::to_string(m.events));
-  table.meta("mean_drop", num(m.mean_drop));
-  table.meta("mean_size", num(m.mean_size));
-  table.meta("mean_rise_rate", num(m.mean_rise_rate));
-  table.meta("mean_drop_rate", num(m.mean_drop_rate));
-  table.meta("drop_over_rise_rate", num(m.rate_ratio));
-  table.meta("tail_events", std::to_string(m.tail_events));
-  table.meta("tail_scale_over_mean_drop", num(m.tail_scale));
-  table.meta("tail_ks_distance", num(m.tail_ks));
+  const std::pair<const char*, std::string> summary[] = {
+      {"from", num(m.from)},
+      {"to", num(m.to)},
+      {"mean_pressure", num(m.mean_pressure)},
+      {"events", std::to_string(m.events)},
+      {"mean_drop", num(m.mean_drop)},
+      {"mean_size", num(m.mean_size)},
+      {"mean_rise_rate", num(m.mean_rise_rate)},
+      {"mean_drop_rate", num(m.mean_drop_rate)},
+      {"drop_over_rise_rate", num(m.rate_ratio)},
+      {"tail_events", std::to_string(m.tail_events)},
+      {"tail_scale_over_mean_drop", num(m.tail_scale)},
+      {"tail_ks_distance", num(m.tail_ks)}};
+  for (const auto& [key, value] : summary) table.meta(key, value);
   table.header({"event", "start", "end", "peak_time", "peak", "base_time", "base", "drop", "rise_rate", "drop_rate",
                 "cells"});
   for (std::size_t e = 0; e < events.size(); ++e) {

@@ -1,5 +1,6 @@
 #include "cells2d/chamber_output.hpp"
 
+#include "cells2d/packing_xyz.hpp"
 #include "io/csv.hpp"
 
 #include <fmt/format.h>
@@ -50,28 +51,17 @@ io::XyzFrame chamber_frame(ChamberRun& run, const std::vector<std::pair<std::str
   frame.lattice(0, 0) = g.width;
   frame.lattice(1, 1) = g.height + g.channel;
   frame.pbc = {false, false, false};
+  set_lobe_columns(frame, cells);
   const auto lobes = static_cast<Eigen::Index>(2 * cells.size());
-  mesh::VertexMatrix pos(lobes, 3);
-  Eigen::VectorXd radius(lobes), orientation(lobes), force(lobes), pressure(lobes);
-  std::vector<int> cell_id(static_cast<std::size_t>(lobes)), lobe(static_cast<std::size_t>(lobes)), contacts(static_cast<std::size_t>(lobes));
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    for (int k = 0; k < 2; ++k) {
-      const std::size_t l = 2 * i + static_cast<std::size_t>(k);
-      const auto r = static_cast<Eigen::Index>(l);
-      const Eigen::Vector2d p = lobe_centre(cells[i], k);
-      pos.row(r) << p[0], p[1], 0.0;
-      radius[r] = 0.5 * lobe_diameter(cells[i], k);
-      orientation[r] = cells[i].theta;
-      force[r] = loads.force[l];
-      pressure[r] = radius[r] > 0 ? loads.force[l] / (2 * std::numbers::pi * radius[r]) : 0.0;
-      cell_id[l] = static_cast<int>(i), lobe[l] = k, contacts[l] = loads.contacts[l];
-    }
-  frame.set_species(std::vector<std::string>(static_cast<std::size_t>(lobes), "X"));
-  frame.set_positions(pos);
-  frame.set_real_column("radius", radius);
-  frame.set_integer_column("cell", cell_id);
-  frame.set_integer_column("lobe", lobe);
-  frame.set_real_column("orientation", orientation);
+  Eigen::VectorXd force(lobes), pressure(lobes);
+  std::vector<int> contacts(static_cast<std::size_t>(lobes));
+  for (std::size_t l = 0; l < 2 * cells.size(); ++l) {
+    const auto r = static_cast<Eigen::Index>(l);
+    const double radius = 0.5 * lobe_diameter(cells[l / 2], static_cast<int>(l % 2));
+    force[r] = loads.force[l];
+    pressure[r] = radius > 0 ? loads.force[l] / (2 * std::numbers::pi * radius) : 0.0;
+    contacts[l] = loads.contacts[l];
+  }
   frame.set_real_column("force", force);
   frame.set_real_column("pressure", pressure);
   frame.set_integer_column("contacts", contacts);

@@ -43,6 +43,29 @@ std::vector<Cell> canonical_cells(const std::vector<Cell>& cells, double box) {
   return out;
 }
 
+void set_lobe_columns(io::XyzFrame& frame, const std::vector<Cell>& cells) {
+  const auto lobes = static_cast<Eigen::Index>(2 * cells.size());
+  mesh::VertexMatrix pos(lobes, 3);
+  Eigen::VectorXd radius(lobes), orientation(lobes);
+  std::vector<int> cell_id(static_cast<std::size_t>(lobes)), lobe(static_cast<std::size_t>(lobes));
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    for (int k = 0; k < 2; ++k) {
+      const std::size_t l = 2 * i + static_cast<std::size_t>(k);
+      const auto r = static_cast<Eigen::Index>(l);
+      const Eigen::Vector2d p = lobe_centre(cells[i], k);
+      pos.row(r) << p[0], p[1], 0.0;
+      radius[r] = 0.5 * lobe_diameter(cells[i], k);
+      orientation[r] = cells[i].theta;
+      cell_id[l] = static_cast<int>(i), lobe[l] = k;
+    }
+  frame.set_species(std::vector<std::string>(static_cast<std::size_t>(lobes), "X"));
+  frame.set_positions(pos);
+  frame.set_real_column("radius", radius);
+  frame.set_integer_column("cell", cell_id);
+  frame.set_integer_column("lobe", lobe);
+  frame.set_real_column("orientation", orientation);
+}
+
 io::XyzFrame packing_frame(const std::vector<Cell>& cells, double box, const PackingAnalysis* analysis,
                            const std::vector<std::pair<std::string, std::string>>& info) {
   io::XyzFrame frame;
@@ -50,31 +73,17 @@ io::XyzFrame packing_frame(const std::vector<Cell>& cells, double box, const Pac
   frame.lattice = Eigen::Matrix3d::Identity();
   frame.lattice(0, 0) = frame.lattice(1, 1) = box;
   frame.pbc = {true, true, false};
+  std::vector<Cell> wrapped_cells;
+  wrapped_cells.reserve(cells.size());
+  for (const Cell& c : cells) wrapped_cells.push_back(wrapped(c, box));
+  set_lobe_columns(frame, wrapped_cells);
   const std::size_t lobes = 2 * cells.size();
-  mesh::VertexMatrix pos(static_cast<Eigen::Index>(lobes), 3);
-  Eigen::VectorXd radius(static_cast<Eigen::Index>(lobes)), orientation(static_cast<Eigen::Index>(lobes)),
-      pressure(static_cast<Eigen::Index>(lobes));
-  std::vector<int> cell_id(lobes), lobe(lobes), contacts(lobes, 0);
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const Cell w = wrapped(cells[i], box);
-    for (int k = 0; k < 2; ++k) {
-      const auto l = static_cast<Eigen::Index>(2 * i + static_cast<std::size_t>(k));
-      const Eigen::Vector2d p = lobe_centre(w, k);
-      pos.row(l) << p[0], p[1], 0.0;
-      radius[l] = 0.5 * lobe_diameter(w, k);
-      orientation[l] = w.theta;
-      cell_id[static_cast<std::size_t>(l)] = static_cast<int>(i);
-      lobe[static_cast<std::size_t>(l)] = k;
-      pressure[l] = analysis ? analysis->lobe_pressure(cells, static_cast<int>(l)) : 0.0;
-      if (analysis) contacts[static_cast<std::size_t>(l)] = analysis->lobe_contacts[static_cast<std::size_t>(l)];
-    }
+  Eigen::VectorXd pressure(static_cast<Eigen::Index>(lobes));
+  std::vector<int> contacts(lobes, 0);
+  for (std::size_t l = 0; l < lobes; ++l) {
+    pressure[static_cast<Eigen::Index>(l)] = analysis ? analysis->lobe_pressure(cells, static_cast<int>(l)) : 0.0;
+    if (analysis) contacts[l] = analysis->lobe_contacts[l];
   }
-  frame.set_species(std::vector<std::string>(lobes, "X"));
-  frame.set_positions(pos);
-  frame.set_real_column("radius", radius);
-  frame.set_integer_column("cell", cell_id);
-  frame.set_integer_column("lobe", lobe);
-  frame.set_real_column("orientation", orientation);
   frame.set_real_column("pressure", pressure);
   frame.set_integer_column("contacts", contacts);
   for (const auto& [k, v] : info) frame.set_info(k, v);

@@ -31,6 +31,10 @@ struct CellPacking {
   long line = 0;
 };
 
+// The columns every frame of budding cells starts with, one row per lobe (2i mother, 2i + 1
+// bud of cell i): species X, pos (z = 0), radius, cell, lobe, orientation; the cells as given.
+void set_lobe_columns(io::XyzFrame& frame, const std::vector<Cell>& cells);
+
 // The frame of a packing; analysis (may be null) fills pressure and contacts (else 0).
 // info pairs are appended to the comment line.
 io::XyzFrame packing_frame(const std::vector<Cell>& cells, double box, const PackingAnalysis* analysis,
