@@ -353,4 +353,10 @@ std::string provenance(const std::string& tool, int argc, char** argv) {
   return fmt::format("{} {}: {}", tool, version(), command_line(argc, argv));
 }
 
+std::string provenance(const std::string& tool, std::vector<std::string> args) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return provenance(tool, static_cast<int>(argv.size()), argv.data());
+}
+
 }  // namespace cmp::cli

@@ -183,5 +183,8 @@ std::string command_line(int argc, char** argv);
 
 // "tool version" followed by the command line: what every output file records of its origin.
 std::string provenance(const std::string& tool, int argc, char** argv);
+// The same for a command line held as strings (argv[0] first), e.g. without the options that
+// steer only this process (cli/checkpoint_args.hpp).
+std::string provenance(const std::string& tool, std::vector<std::string> args);
 
 }  // namespace cmp::cli

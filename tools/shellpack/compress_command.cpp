@@ -158,9 +158,7 @@ void CompressCommand::run(bool, const std::string&) {
   // and resumed run then writes the same provenance, so the same bytes, as one never stopped.
   std::vector<std::string> run_args{"shellpack", "compress"};
   run_args.insert(run_args.end(), job.checkpoint_args.begin(), job.checkpoint_args.end());
-  std::vector<char*> run_argv;
-  for (auto& a : run_args) run_argv.push_back(a.data());
-  packrun::run_compress_job(job, cli::provenance("shellpack", static_cast<int>(run_argv.size()), run_argv.data()));
+  packrun::run_compress_job(job, cli::provenance("shellpack", run_args));
 }
 
 }  // namespace cmp::shellpack
