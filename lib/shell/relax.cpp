@@ -5,6 +5,7 @@
 #include "mesh/edge_topology.hpp"
 #include "shell/element_assembly.hpp"
 #include "shell/volume_rule.hpp"
+#include "shell/volume_update_window.hpp"
 
 #include <cmath>
 
@@ -83,15 +84,14 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
   const long before = r.iterations;
   TurgorPressure* pressure = s.pressure();
   minimise::FireAdjust adjust;
-  long last_check = 0;
+  VolumeUpdateWindow window(fp.force_tolerance, p.volume_update_factor, p.volume_update_interval);
   if (pressure && pressure->control() == PressureControl::ConstantVolume) {
-    const double loose = p.volume_update_factor * fp.force_tolerance;
-    adjust = [&, pressure, loose](long it, double max_force) {
-      if (!(max_force <= loose) || r.volume_updates >= p.max_volume_updates) return false;
-      if (max_force > fp.force_tolerance && it - last_check < p.volume_update_interval) return false;
-      last_check = it;
-      if (!(pressure->volume_error(span_of(s.x)) > p.volume_tolerance)) return false;
+    adjust = [&, pressure](long it, double max_force) {
+      if (r.volume_updates >= p.max_volume_updates || !window.open(it, max_force)) return false;
+      const double error = pressure->volume_error(span_of(s.x));
+      if (!(error > p.volume_tolerance)) return false;
       rule.update(*pressure, span_of(s.x));
+      window.moved(max_force, error);
       ++r.volume_updates;
       return true;
     };

@@ -15,7 +15,8 @@
 // iterations when Pi moves while x relaxes: once FIRE's residual is below
 // volume_update_factor times the force tolerance (x near equilibrium for the current Pi, so
 // V answers to it), the volumes are checked every volume_update_interval iterations and at
-// convergence, and a shell off by more than the tolerance gets the update there and then.
+// convergence, and a shell off by more than the tolerance gets the update there and then; the
+// next update inside FIRE then waits for a residual no higher (shell/volume_update_window.hpp).
 // FIRE stops only at the force tolerance with every volume within its tolerance (or a whole
 // relaxation follows, as in the thesis's loop), and every Pi update counts in volume_updates.
 //
