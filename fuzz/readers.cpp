@@ -7,7 +7,7 @@
 #include "io/sphere_packing_xyz.hpp"
 #include "io/vtk.hpp"
 #include "io/xyz.hpp"
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 
 #include <climits>
 #include <sstream>
@@ -84,9 +84,9 @@ void read_vtk(const std::string& bytes) {
 
 void read_packing(const std::string& bytes) {
   with_input(bytes, [](io::Input& in) {
-    voxel::PackingReadOptions options;
+    packing::PackingReadOptions options;
     options.scale = 1.1;
-    (void)voxel::read_packings(in, options);
+    (void)packing::read_packings(in, options);
   });
   with_input(bytes, [](io::Input& in) {
     if (in.format() == io::InputFormat::xyz) (void)io::read_sphere_packing_xyz(in, io::PbcRule::require_all);

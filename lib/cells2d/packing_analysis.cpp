@@ -1,6 +1,9 @@
 #include "cells2d/packing_analysis.hpp"
 
+#include "packing/rattlers.hpp"
+
 #include <numbers>
+#include <utility>
 
 namespace cmp::cells2d {
 
@@ -46,25 +49,13 @@ PackingAnalysis analyse_packing(const std::vector<Cell>& cells, ContactEngine& e
   for (const Cell& c : cells) rate_area += cell_area(c.bud) * c.rate, area += cell_area(c.bud);
   a.mean_rate = area > 0 ? rate_area / area : 0.0;
 
-  // Rattlers, removed until none is left.
-  a.rattler.assign(n, 0);
-  std::vector<int> live = a.lobe_contacts;  // contacts with non-rattlers
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (a.rattler[i]) continue;
-      const int m = live[2 * i], b = live[2 * i + 1], total = m + b;
-      if (total < 3 || (total == 3 && m > 0 && b > 0)) {
-        a.rattler[i] = 1;
-        changed = true;
-        for (const auto& [p, q] : pairs) {
-          const int other = (p >> 1) == static_cast<int>(i) ? q : ((q >> 1) == static_cast<int>(i) ? p : -1);
-          if (other >= 0 && !a.rattler[static_cast<std::size_t>(other >> 1)]) --live[static_cast<std::size_t>(other)];
-        }
-        live[2 * i] = live[2 * i + 1] = 0;
-      }
-    }
-  }
+  // Rattlers (the rule of packing_analysis.hpp), removed until none is left.
+  auto pruned = packing::prune_rattlers(a.cells, 2, pairs, [](std::span<const int> live) {
+    const int total = live[0] + live[1];
+    return total < 3 || (total == 3 && live[0] > 0 && live[1] > 0);
+  });
+  a.rattler = std::move(pruned.rattler);
+  const std::vector<int>& live = pruned.live;  // contacts with non-rattlers
   for (std::size_t i = 0; i < n; ++i) {
     if (a.rattler[i]) { ++a.rattlers; continue; }
     a.unconstrained += (live[2 * i] == 0) + (live[2 * i + 1] == 0);

@@ -7,7 +7,7 @@
 #include "io/input.hpp"
 #include "lbm/sphere_lattice.hpp"
 #include "voxel/grid.hpp"
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 #include "voxel/porosity.hpp"
 
 #include <fmt/format.h>
@@ -81,7 +81,7 @@ void FlowCase::release_lattice() {
   lattice = lbm::PoreLattice{};
 }
 
-FlowCase sphere_case(const voxel::Packing& p, double delta, int M, int axis, bool periodic_axis) {
+FlowCase sphere_case(const packing::Packing& p, double delta, int M, int axis, bool periodic_axis) {
   if (!(p.periodic[0] && p.periodic[1] && p.periodic[2]))
     throw InputError(p.file, 0, "the sphere packing must be periodic on every axis (pbc=\"T T T\") for the flow");
   if (delta * p.d0 > p.box.minCoeff())
@@ -133,7 +133,7 @@ FlowCase read_flow_case(const std::string& path, const InputOptions& o) {
   if (format == io::InputFormat::xyz) {
     if (!(o.delta > 0))
       throw UsageError(path + ": a sphere packing needs --delta (the voxel side in D0; the node side is delta/M)");
-    auto packings = voxel::read_packings(input, {o.scale, o.d0});
+    auto packings = packing::read_packings(input, {o.scale, o.d0});
     if (packings.size() != 1) throw InputError(path, 0, "holds several frames: give lbflow one packing per file");
     return sphere_case(packings.front(), o.delta, o.refine, o.axis, o.periodic_axis);
   }

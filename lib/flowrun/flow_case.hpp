@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-namespace cmp::voxel {
+namespace cmp::packing {
 struct Packing;
 }
 
@@ -63,7 +63,7 @@ FlowCase image_case(const FlowImage& image, int M, int axis, bool periodic_axis)
 // is the geometric one (pair lenses, as percolate's). Throws cmp::UsageError when delta D0
 // passes the box, cmp::InputError for a packing that is not periodic on every axis, and
 // cmp::ComputationError as image_case.
-FlowCase sphere_case(const voxel::Packing& packing, double delta, int M, int axis, bool periodic_axis);
+FlowCase sphere_case(const packing::Packing& packing, double delta, int M, int axis, bool periodic_axis);
 
 // How lbflow reads an input.
 struct InputOptions {

@@ -144,8 +144,8 @@ void write_analysis_contacts(std::ostream& out, const std::vector<PackingAnalysi
 }
 
 void run_analyze_batch(const AnalyzeBatch& b, const std::string& provenance) {
-  std::vector<ShellPackingFile> packings;
-  for (const auto& path : b.inputs) packings.push_back(read_shell_packing(path));
+  std::vector<packing::ShellPackingFile> packings;
+  for (const auto& path : b.inputs) packings.push_back(packing::read_shell_packing(path));
   AnalyzeOptions o = b.options;
   o.require_rdf = o.require_rdf || !b.rdf_output.empty();
   o.require_contacts = o.require_contacts || !b.contacts_output.empty();

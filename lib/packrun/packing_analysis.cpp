@@ -3,7 +3,7 @@
 #include "core/errors.hpp"
 #include "core/minimum_image.hpp"
 #include "shell/voronoi_faces.hpp"
-#include "voxel/porosity.hpp"
+#include "packing/shell_volumes.hpp"
 
 #include <fmt/format.h>
 
@@ -28,7 +28,7 @@ spheres::SpherePacking centres_as_spheres(const PackingAnalysis& a) {
   return s;
 }
 
-void check_distinct_centres(const ShellPackingFile& p, const PackingAnalysis& a) {
+void check_distinct_centres(const packing::ShellPackingFile& p, const PackingAnalysis& a) {
   const double tol = 1e-9 * a.d0;
   for (std::size_t i = 0; i < a.shapes.size(); ++i)
     for (std::size_t j = i + 1; j < a.shapes.size(); ++j) {
@@ -42,7 +42,7 @@ void check_distinct_centres(const ShellPackingFile& p, const PackingAnalysis& a)
 
 }  // namespace
 
-PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions& o) {
+PackingAnalysis analyze_packing(const packing::ShellPackingFile& p, const AnalyzeOptions& o) {
   PackingAnalysis a;
   a.file = p.file;
   a.particles = p.shells();
@@ -53,7 +53,7 @@ PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions&
   a.bending = k.bending.value_or("");
   auto warn = [&](const std::string& what) { a.warnings.push_back(fmt::format("{}: {}", p.file, what)); };
 
-  a.volumes = voxel::shell_volumes(p.V, p.F, p.offsets);
+  a.volumes = packing::shell_volumes(p.V, p.F, p.offsets);
   const double box_volume = p.box.prod();
   if (k.phi) {
     a.phi = *k.phi;

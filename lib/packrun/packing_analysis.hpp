@@ -5,7 +5,7 @@
 // observable is computed when the packing holds what it needs (a value from the file or an
 // option); otherwise it is left out with one warning, or, when the user asked for it
 // explicitly (a table of it), the packing is refused.
-#include "packrun/shell_packing_file.hpp"
+#include "packing/shell_packing_file.hpp"
 #include "shell/shell_contact_forces.hpp"
 #include "shell/shell_shapes.hpp"
 #include "shell/wall_load.hpp"
@@ -56,6 +56,6 @@ struct PackingAnalysis {
 
 // Everything computable for p under o. Throws cmp::InputError(p.file, 0, ...) when a table
 // the user asked for cannot be made, or two shells share their centre.
-PackingAnalysis analyze_packing(const ShellPackingFile& p, const AnalyzeOptions& o);
+PackingAnalysis analyze_packing(const packing::ShellPackingFile& p, const AnalyzeOptions& o);
 
 }  // namespace cmp::packrun

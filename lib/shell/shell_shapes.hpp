@@ -19,7 +19,7 @@ struct ShellShape {
 };
 
 // One shape per shell: shell k owns rows [offsets[k], offsets[k+1]) of V, each shell unwrapped
-// into one periodic image (voxel::unwrap_shells) so that its vertex cloud is whole. The
+// into one periodic image (packing::unwrap_shells) so that its vertex cloud is whole. The
 // gyration tensor is over the vertices (Eq. 4.6), not the surface.
 std::vector<ShellShape> shell_shapes(const mesh::VertexMatrix& V, const std::vector<int>& offsets);
 

@@ -1,5 +1,7 @@
 #include "spheres/rattlers.hpp"
 
+#include "packing/rattlers.hpp"
+
 namespace cmp::spheres {
 
 std::vector<int> contact_counts(int n, const std::vector<Contact>& contacts) {
@@ -9,20 +11,11 @@ std::vector<int> contact_counts(int n, const std::vector<Contact>& contacts) {
 }
 
 std::vector<bool> find_rattlers(int n, const std::vector<Contact>& contacts, int min_contacts) {
-  std::vector<int> counts = contact_counts(n, contacts);
-  std::vector<std::vector<int>> partners(static_cast<std::size_t>(n));
-  for (const auto& c : contacts) partners[c.i].push_back(c.j), partners[c.j].push_back(c.i);
-  std::vector<bool> rattler(static_cast<std::size_t>(n), false);
-  std::vector<int> pending;
-  for (int i = 0; i < n; ++i)
-    if (counts[i] < min_contacts) rattler[i] = true, pending.push_back(i);
-  while (!pending.empty()) {
-    const int i = pending.back();
-    pending.pop_back();
-    for (int j : partners[i])
-      if (!rattler[j] && --counts[j] < min_contacts) rattler[j] = true, pending.push_back(j);
-  }
-  return rattler;
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(contacts.size());
+  for (const auto& c : contacts) pairs.emplace_back(c.i, c.j);
+  const auto r = packing::prune_rattlers(n, 1, pairs, [&](std::span<const int> live) { return live[0] < min_contacts; });
+  return {r.rattler.begin(), r.rattler.end()};
 }
 
 }  // namespace cmp::spheres

@@ -1,8 +1,8 @@
 #pragma once
-// Rattlers: spheres that carry no load in a jammed packing. The standard iterative rule
-// (the thesis, 5.5.1, rejects packings with rattlers but does not define them): remove every
-// sphere with fewer than d + 1 = 4 contacts, which may strip its partners below 4 in turn,
-// until none is left.
+// Rattlers: spheres that carry no load in a jammed packing. The standard iterative rule (the
+// thesis, 5.5.1, rejects packings with rattlers but does not define them): remove every sphere
+// with fewer than d + 1 = 4 contacts, which may strip its partners below 4 in turn, until none
+// is left (the removal is packing::prune_rattlers; this file is the spheres' rule).
 #include "spheres/hertz_spheres.hpp"
 
 #include <vector>

@@ -9,10 +9,10 @@
 
 namespace cmp::voxel {
 
-PackingFrames read_packing_frames(const std::vector<std::string>& inputs, const PackingReadOptions& options) {
-  std::vector<std::vector<Packing>> per_input(inputs.size());
+PackingFrames read_packing_frames(const std::vector<std::string>& inputs, const packing::PackingReadOptions& options) {
+  std::vector<std::vector<packing::Packing>> per_input(inputs.size());
   parallel_for_each_job(static_cast<long>(inputs.size()),
-                        [&](long i) { per_input[i] = read_packings(inputs[i], options); });
+                        [&](long i) { per_input[i] = packing::read_packings(inputs[i], options); });
   PackingFrames frames;
   for (std::size_t i = 0; i < per_input.size(); ++i) {
     frames.several_frames |= per_input[i].size() > 1;
@@ -33,9 +33,9 @@ std::vector<PercolateRun> percolate_runs(std::size_t packings, std::size_t scale
   return runs;
 }
 
-void check_percolate_plan(const std::vector<Packing>& packings, const PercolatePlan& plan) {
+void check_percolate_plan(const std::vector<packing::Packing>& packings, const PercolatePlan& plan) {
   for (const auto& p : packings) {
-    if (p.kind == Packing::Kind::Shells)
+    if (p.kind == packing::Packing::Kind::Shells)
       for (std::size_t s = 0; s < plan.scales.size(); ++s)
         if (plan.scales[s] != 1)
           throw UsageError(fmt::format("{}: --scale {} applies to sphere packings (extended XYZ) only; this is a "
@@ -52,12 +52,12 @@ std::string run_percolate(const PackingFrames& frames, const PercolatePlan& plan
                           const std::vector<PercolateRun>& runs, const PercolateRunSink& sink) {
   std::vector<std::string> inexact;
   long inexact_runs = 0;
-  Packing scaled;
+  packing::Packing scaled;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const auto& run = runs[r];
     if (r == 0 || runs[r - 1].packing != run.packing || runs[r - 1].scale != run.scale) {
       scaled = frames.packings[run.packing];
-      if (scaled.kind == Packing::Kind::Spheres) {
+      if (scaled.kind == packing::Packing::Kind::Spheres) {
         scaled.radii *= plan.scales[run.scale];
         scaled.scale = plan.scales[run.scale];
       }
@@ -77,7 +77,7 @@ std::string run_percolate(const PackingFrames& frames, const PercolatePlan& plan
     std::vector<std::pair<std::string, std::string>> fields{
         {"file", p.file},
         {"frame", std::to_string(frames.frame_of[run.packing])},
-        {"kind", p.kind == Packing::Kind::Shells ? "shells" : "spheres"},
+        {"kind", p.kind == packing::Packing::Kind::Shells ? "shells" : "spheres"},
         {"particles", std::to_string(p.particles())},
         {"d0", io::format_number(p.d0)},
         {"d0_source", p.d0_source},

@@ -4,7 +4,7 @@
 // percolating cluster as a VTK image when asked for, and a summary line for stderr.
 #include "io/csv.hpp"
 #include "io/vtk.hpp"
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 #include "voxel/pore_analysis.hpp"
 
 #include <cstddef>
@@ -18,7 +18,7 @@ namespace cmp::voxel {
 // The packings of the input files, frame by frame: an OFF gives one, an extended XYZ one per
 // frame (frame 0, 1, ... as ASE and OVITO count them).
 struct PackingFrames {
-  std::vector<Packing> packings;     // input after input, frame after frame
+  std::vector<packing::Packing> packings;     // input after input, frame after frame
   std::vector<std::size_t> input_of;  // per packing: its index in the list of inputs
   std::vector<int> frame_of;          // per packing: its frame in that input
   bool several_frames = false;        // some input holds more than one frame
@@ -27,7 +27,7 @@ struct PackingFrames {
 // Reads every input with read_packings (one job per input, in parallel) before anything is
 // analysed, so a bad file stops percolate before any output is written. Throws what
 // read_packings throws (the error of the first bad input in the list).
-PackingFrames read_packing_frames(const std::vector<std::string>& inputs, const PackingReadOptions& options);
+PackingFrames read_packing_frames(const std::vector<std::string>& inputs, const packing::PackingReadOptions& options);
 
 // One run: a packing at one radius scale and one delta (indices into the lists).
 struct PercolateRun {
@@ -54,7 +54,7 @@ struct PercolatePlan {
 // Checks plan's lists against the packings read. Throws cmp::UsageError naming the file for:
 // a --scale other than 1 given with a packing of shells (it scales spheres only); a --delta
 // whose voxel side delta * D_0 is larger than the box's smallest side.
-void check_percolate_plan(const std::vector<Packing>& packings, const PercolatePlan& plan);
+void check_percolate_plan(const std::vector<packing::Packing>& packings, const PercolatePlan& plan);
 
 // What one run gives.
 struct PercolateRunResult {

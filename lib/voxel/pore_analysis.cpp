@@ -4,6 +4,7 @@
 #include "io/csv.hpp"
 #include "voxel/hydraulic_radius.hpp"
 #include "voxel/percolation.hpp"
+#include "packing/shell_volumes.hpp"
 #include "voxel/porosity.hpp"
 
 #include <chrono>
@@ -16,12 +17,12 @@ namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
-GeometricPorosity geometric_porosity(const Packing& p) {
+GeometricPorosity geometric_porosity(const packing::Packing& p) {
   GeometricPorosity out;
   const double box_volume = p.box.prod();
-  if (p.kind == Packing::Kind::Shells) {
+  if (p.kind == packing::Packing::Kind::Shells) {
     double v = 0;
-    for (double s : shell_volumes(p.V, p.F, p.shell_offsets)) v += s;
+    for (double s : packing::shell_volumes(p.V, p.F, p.shell_offsets)) v += s;
     out.method = "shell_volumes";
     out.particle_volume_fraction = v / box_volume;
     out.porosity = std::clamp(1 - out.particle_volume_fraction, 0.0, 1.0);
@@ -38,7 +39,7 @@ GeometricPorosity geometric_porosity(const Packing& p) {
   return out;
 }
 
-PoreAnalysis analyse_pores(const Packing& p, double delta, const PoreAnalysisOptions& o, std::vector<std::uint8_t>* cluster) {
+PoreAnalysis analyse_pores(const packing::Packing& p, double delta, const PoreAnalysisOptions& o, std::vector<std::uint8_t>* cluster) {
   PoreAnalysis a;
   a.flow_axis = o.flow_axis;
   try {
@@ -51,7 +52,7 @@ PoreAnalysis analyse_pores(const Packing& p, double delta, const PoreAnalysisOpt
 
   double t0 = now();
   std::vector<std::uint8_t> pore(g.size(), 1);
-  if (p.kind == Packing::Kind::Shells) {
+  if (p.kind == packing::Packing::Kind::Shells) {
     mark_shells(p.V, p.F, g, o.shell_marking, o.thickness * p.d0, pore);
     a.marking = shell_marking_name(o.shell_marking);
     if (o.thickness > 0) a.marking += "+" + io::format_number(o.thickness);

@@ -4,7 +4,7 @@
 // spans the flow axis, and hand back that cluster as an image (the input of lbflow).
 #include "voxel/grid.hpp"
 #include "voxel/label_components.hpp"
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 #include "voxel/solid_marking.hpp"
 
 #include <array>
@@ -27,7 +27,7 @@ struct GeometricPorosity {
 // not overlap; clamped to [0, 1] with exact = false when they must). Spheres: 1 - (sum V - sum of pair lenses) / V_box ("sphere_pair_lenses"), exact
 // while no point is in three spheres and no sphere or pair overlaps its own periodic image;
 // otherwise an upper bound of the true porosity (Bonferroni), capped at 1, with exact = false.
-GeometricPorosity geometric_porosity(const Packing& packing);
+GeometricPorosity geometric_porosity(const packing::Packing& packing);
 
 struct PoreAnalysisOptions {
   ShellMarking shell_marking = ShellMarking::Triangles;
@@ -63,7 +63,7 @@ struct PoreAnalysis {
 // voxels: 1 in the clusters spanning the flow axis, 0 elsewhere (memory: the pore image
 // becomes this, so the peak is one byte plus one label per voxel). Throws cmp::UsageError for
 // a delta that make_grid rejects (naming the file).
-PoreAnalysis analyse_pores(const Packing& packing, double delta, const PoreAnalysisOptions& options,
+PoreAnalysis analyse_pores(const packing::Packing& packing, double delta, const PoreAnalysisOptions& options,
                            std::vector<std::uint8_t>* cluster = nullptr);
 
 // Column names and values of one CSV row (units in the names), from nx to rh_faces_d0; no

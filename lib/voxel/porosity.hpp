@@ -14,13 +14,6 @@ namespace cmp::voxel {
 // Fraction of the voxels that are void (nonzero). 0 for an empty image.
 double voxel_porosity(const std::vector<std::uint8_t>& pore);
 
-// Enclosed volume of every shell of a packing (mesh::enclosed_volume, divergence theorem).
-//   V        #V by 3, each shell in one periodic image (see unwrap_shells)
-//   F        #F by 3 triangles, each within one shell
-//   offsets  K+1 vertex offsets (io::shell_vertex_offsets): shell k owns [offsets[k], offsets[k+1])
-// Result: K signed volumes (positive for outward faces).
-std::vector<double> shell_volumes(const mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::vector<int>& offsets);
-
 struct SphereVolumes {
   double total = 0;         // sum of 4/3 pi r^3
   double pair_overlap = 0;  // sum of the lens volumes of every overlapping pair of spheres, periodic

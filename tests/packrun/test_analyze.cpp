@@ -6,7 +6,7 @@
 #include "core/errors.hpp"
 #include "packrun/analyze_batch.hpp"
 #include "packrun/packing_analysis.hpp"
-#include "packrun/shell_packing_file.hpp"
+#include "packing/shell_packing_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -15,6 +15,7 @@
 
 using namespace cmp;
 using namespace cmp::packrun;
+using namespace cmp::packing;
 
 namespace {
 

@@ -64,7 +64,7 @@ TEST_CASE("check_percolate_plan refuses a delta larger than the box and a scale 
   CHECK_THROWS_WITH(check_percolate_plan(frames.packings, plan_of({2.5}, {"2.50"}, {1}, {"1"})),
                     Catch::Contains("--delta 2.50 is larger than the box"));
   auto shells = frames.packings;
-  shells[0].kind = Packing::Kind::Shells;
+  shells[0].kind = cmp::packing::Packing::Kind::Shells;
   CHECK_THROWS_WITH(check_percolate_plan(shells, plan_of({0.5}, {"0.5"}, {1, 1.1}, {"1", "1.1"})),
                     Catch::Contains("--scale 1.1 applies to sphere packings"));
 }

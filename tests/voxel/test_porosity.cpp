@@ -1,3 +1,4 @@
+#include "packing/shell_volumes.hpp"
 #include "voxel/porosity.hpp"
 
 #include "spheremesh/subdivision.hpp"
@@ -44,7 +45,7 @@ TEST_CASE("shell_volumes of two sphere meshes and voxel_porosity", "[voxel][poro
   V << a.V, b.V;
   cmp::mesh::FaceMatrix F(a.F.rows() + b.F.rows(), 3);
   F << b.F.array() + na, a.F;  // faces in any order
-  const auto vols = shell_volumes(V, F, {0, static_cast<int>(na), static_cast<int>(V.rows())});
+  const auto vols = cmp::packing::shell_volumes(V, F, {0, static_cast<int>(na), static_cast<int>(V.rows())});
   REQUIRE(vols.size() == 2);
   CHECK(vols[0] == Approx(4 * M_PI / 3).epsilon(0.04));  // chordal mesh (level 3): 3.4% less
   CHECK(vols[0] < 4 * M_PI / 3);

@@ -1,7 +1,7 @@
 #pragma once
-// A packing as percolate reads it: shells from a packing OFF (docs/formats.md: '# box', '# periodic',
-// '# shells') or spheres from an extended XYZ frame (Lattice, radius column), with the length
-// D_0 that delta is measured in.
+// A packing as the tools read it (percolate, lbflow, shellpack analyze): shells from a packing
+// OFF (docs/formats.md: '# box', '# periodic', '# shells') or spheres from an extended XYZ frame
+// (Lattice, radius column), with the length D_0 that delta is measured in.
 #include "mesh/tri_mesh.hpp"
 
 #include <Eigen/Core>
@@ -14,7 +14,7 @@ namespace cmp::io {
 class Input;
 }
 
-namespace cmp::voxel {
+namespace cmp::packing {
 
 // The largest box side of a packing OFF, in D0: larger is refused when read.
 inline constexpr double kMaxBoxInD0 = 1e6;
@@ -72,4 +72,4 @@ Packing read_packing(const std::string& path, const PackingReadOptions& options 
 void unwrap_shells(mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::vector<int>& offsets,
                    const Eigen::Vector3d& box, std::array<bool, 3> periodic);
 
-}  // namespace cmp::voxel
+}  // namespace cmp::packing

@@ -1,4 +1,4 @@
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 
 #include "core/errors.hpp"
 #include "io/input.hpp"
@@ -6,14 +6,14 @@
 #include "io/off.hpp"
 #include "io/parse_number.hpp"
 #include "io/sphere_packing_xyz.hpp"
-#include "voxel/porosity.hpp"
+#include "packing/shell_volumes.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <queue>
 
-namespace cmp::voxel {
+namespace cmp::packing {
 
 namespace {
 
@@ -160,4 +160,4 @@ void unwrap_shells(mesh::VertexMatrix& V, const mesh::FaceMatrix& F, const std::
     }
 }
 
-}  // namespace cmp::voxel
+}  // namespace cmp::packing

@@ -1,4 +1,4 @@
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 
 #include "core/errors.hpp"
 #include "spheremesh/subdivision.hpp"
@@ -12,17 +12,17 @@
 #include <iostream>
 #include <sstream>
 
-using namespace cmp::voxel;
+using namespace cmp::packing;
 
 namespace {
 std::string write_file(const std::string& name, const std::string& text) {
-  const auto path = (std::filesystem::temp_directory_path() / ("cmp_voxel_" + name)).string();
+  const auto path = (std::filesystem::temp_directory_path() / ("cmp_packing_" + name)).string();
   std::ofstream(path) << text;
   return path;
 }
 }  // namespace
 
-TEST_CASE("read_packing: spheres from extended XYZ, scaled, D0 from the radii or the file", "[voxel][packing]") {
+TEST_CASE("read_packing: spheres from extended XYZ, scaled, D0 from the radii or the file", "[packing]") {
   const auto p = write_file("a.xyz",
                             "2\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:pos:R:3:radius:R:1:contacts:I:1 "
                             "pbc=\"T T T\"\nX 1 1 1 0.5 0\nX 3 3 3 0.7 0\n");
@@ -46,7 +46,7 @@ TEST_CASE("read_packing: spheres from extended XYZ, scaled, D0 from the radii or
   CHECK_THROWS_WITH(read_packing(nolattice), Catch::Contains("Lattice"));
 }
 
-TEST_CASE("read_packing: shells from a packing OFF are unwrapped, and no box is an error", "[voxel][packing]") {
+TEST_CASE("read_packing: shells from a packing OFF are unwrapped, and no box is an error", "[packing]") {
   // One octahedron of radius 0.5 centred on the corner of a periodic box of side 2: its
   // vertices wrapped into the box.
   std::string off = "OFF\n# box 2 2 2\n# periodic 1 1 1\n# shells 1 6\n6 8 0\n";
@@ -99,7 +99,7 @@ std::string error_of(const std::function<void()>& f) {
 }
 }  // namespace
 
-TEST_CASE("read_packings gives one packing per XYZ frame with the pbc of the file", "[voxel][packing]") {
+TEST_CASE("read_packings gives one packing per XYZ frame with the pbc of the file", "[packing]") {
   const auto path = write_file("frames.xyz", kTwoFrames);
   const auto p = read_packings(path, {2, 0});
   REQUIRE(p.size() == 2);
@@ -113,7 +113,7 @@ TEST_CASE("read_packings gives one packing per XYZ frame with the pbc of the fil
   CHECK(read_packings(write_file("oct1.off", kOct)).size() == 1);
 }
 
-TEST_CASE("read_packings tells the format from the content and a dash holds either", "[voxel][packing]") {
+TEST_CASE("read_packings tells the format from the content and a dash holds either", "[packing]") {
   CHECK(read_packings(write_file("spheres.dat", kTwoFrames)).size() == 2);  // no .xyz name needed
   CHECK(read_packings(write_file("shells.txt", kOct))[0].kind == Packing::Kind::Shells);
   {
@@ -141,7 +141,7 @@ TEST_CASE("read_packings tells the format from the content and a dash holds eith
                                                  "an extended XYZ (an atom count first)");
 }
 
-TEST_CASE("read_packings reads D0 strictly and reports it at its line", "[voxel][packing]") {
+TEST_CASE("read_packings reads D0 strictly and reports it at its line", "[packing]") {
   std::string off = kOct;
   off.insert(off.find("6 8 0"), "# D0=2.0abc\n");
   const auto bad_off = write_file("d0.off", off);
@@ -154,7 +154,7 @@ TEST_CASE("read_packings reads D0 strictly and reports it at its line", "[voxel]
   CHECK(error_of([&] { read_packings(hex); }) == hex + ":2: D0='0x2' is not a positive number");
 }
 
-TEST_CASE("read_packings refuses duplicated particles and empty frames", "[voxel][packing]") {
+TEST_CASE("read_packings refuses duplicated particles and empty frames", "[packing]") {
   const auto dup = write_file("dup.xyz", "2\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:pos:R:3:radius:R:1\n"
                                          "X 1 1 1 0.5\nX 1 1 1 0.5\n");
   CHECK_THAT(error_of([&] { read_packings(dup); }), Catch::StartsWith(dup + ":4: particle duplicates"));

@@ -1,9 +1,9 @@
-#include "packrun/shell_packing_file.hpp"
+#include "packing/shell_packing_file.hpp"
 
 #include "core/errors.hpp"
 #include "io/input.hpp"
 #include "io/parse_number.hpp"
-#include "voxel/packing.hpp"
+#include "packing/packing_file.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace cmp::packrun {
+namespace cmp::packing {
 
 namespace {
 
@@ -92,7 +92,7 @@ PackingKeys parse_packing_keys(const std::vector<std::string>& comments, const s
 ShellPackingFile read_shell_packing(const std::string& path) {
   io::Input input(path);
   if (input.format() != io::InputFormat::off) input.fail_format("a packing OFF of shells ('OFF' first, then '# box Lx Ly Lz')");
-  auto packings = voxel::read_packings(input);
+  auto packings = read_packings(input);
   auto& q = packings.back();
   ShellPackingFile p;
   p.file = path;
@@ -113,4 +113,4 @@ ShellPackingFile read_shell_packing(const std::string& path) {
   return p;
 }
 
-}  // namespace cmp::packrun
+}  // namespace cmp::packing

@@ -17,7 +17,7 @@
 #include <vector>
 
 
-namespace cmp::packrun {
+namespace cmp::packing {
 
 struct PackingKeys {
   std::optional<double> phi;             // volume fraction N V0 / L^3, as the writer computed it
@@ -53,10 +53,10 @@ struct ShellPackingFile {
   int shells() const { return static_cast<int>(offsets.size()) - 1; }
 };
 
-// Reads a packing OFF ('-': stdin) as percolate does (voxel::read_packings: unwrapping, D0),
+// Reads a packing OFF ('-': stdin) as percolate does (read_packings: unwrapping, D0),
 // then its keys. Throws cmp::InputError(path, line, ...) for what that rejects (no '# box'
 // line: not a packing OFF; no triangles; ...), an extended XYZ (spheres, not shells), and bad
 // key lines (parse_packing_keys).
 ShellPackingFile read_shell_packing(const std::string& path);
 
-}  // namespace cmp::packrun
+}  // namespace cmp::packing
