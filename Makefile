@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libbo
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
 BENCH_PACKAGES := libplb-dev libopenmpi-dev
 
-.PHONY: all deps configure test test-asan bench tables jamming-figure percolation-figure jam2d-figures chamber-figures flow-figure shell-figures compress-figures run install clean clean-results
+.PHONY: all deps configure test test-asan bench bench-compare tables jamming-figure percolation-figure jam2d-figures chamber-figures flow-figure shell-figures compress-figures run install clean clean-results
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -72,6 +72,12 @@ bench: deps
 	cmake --build $(BUILD) -j $(JOBS)
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	@scripts/bench/run.sh $(BUILD) $(OUT)/bench
+
+# The kernels (FIRE, labelling, lbflow's sweep, shell forces, jam2d) at commit BEFORE beside this
+# checkout's, in alternation, best of ROUNDS: make bench-compare BEFORE=<rev>.
+ROUNDS ?= 5
+bench-compare: configure
+	@scripts/bench/compare_commits.sh $(BEFORE) $(BUILD) $(ROUNDS)
 
 # Tables A.5 and A.6 of the thesis regenerated beside the printed values ($(OUT)/tables/).
 tables: deps all
