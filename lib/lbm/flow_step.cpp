@@ -1,5 +1,6 @@
 // One fused stream+collide AA step (lbm/flow_solver.hpp): the collision operator's sweep over
-// the fixed node chunks on all threads, then the boundary passes.
+// the fixed node chunks on all threads, the halo exchange with the neighbouring ranks, then the
+// boundary passes.
 #include "lbm/flow_solver_state.hpp"
 
 #include "core/thread_governor.hpp"
@@ -16,6 +17,9 @@ void FlowSolver::Impl::step_once() {
                        chunk_consecutive[static_cast<std::size_t>(c)] ? consecutive.data() : nullptr};
     op->sweep(r);
   });
+  // The halo before the boundary passes, which read ghost slots (lbm/halo_exchange.hpp).
+  if (odd) halo.return_ghosts(F.data());
+  else halo.fill_ghosts(F.data());
   apply_pressure_planes(F.data(), odd);
   apply_walls(F.data(), odd);
   ++steps;
