@@ -21,6 +21,8 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   // writes the outputs and prints.
   const lbm::Communicator& comm = o.run.comm;
   const bool root = comm.root();
+  // The decomposition, in the tables' provenance (the results do not depend on it, bit for bit).
+  const std::string decomposition = fmt::format(" (ranks={} threads={} per rank)", comm.size(), omp_get_max_threads());
   std::vector<FlowCase> cases;
   comm.agree([&] {
     for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
@@ -55,16 +57,14 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
     if (!root) continue;
     if (!csv) {
       csv.emplace(csv_out->stream());
-      write_flow_meta(*csv, provenance, o.run.flow, o.run.convergence);
-      // The decomposition (the results do not depend on it, bit for bit).
-      csv->meta("decomposition", fmt::format("ranks={} threads={} per rank", comm.size(), omp_get_max_threads()));
+      write_flow_meta(*csv, provenance + decomposition, o.run.flow, o.run.convergence);
       csv->header(flow_columns(o.timings));
     }
     csv->row(flow_row(c, o.run.flow, out, o.timings));
     if (history_out) {
       if (!history) {
         history.emplace(history_out->stream());
-        history->meta("provenance", provenance);
+        history->meta("provenance", provenance + decomposition);
         history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
         history->header(history_columns());
       }
