@@ -80,6 +80,7 @@ long FlowSolver::steps() const { return impl_->steps; }
 long FlowSolver::fluid_nodes() const { return impl_->global_fluid; }
 long FlowSolver::interpolated_links() const { return impl_->comm.sum(static_cast<long>(impl_->walls.size())); }
 double FlowSolver::halo_slots_per_step() const { return impl_->halo.slots_per_step(); }
+double FlowSolver::halo_seconds() const { return impl_->halo_seconds; }
 const FlowSettings& FlowSolver::settings() const { return impl_->settings; }
 
 double FlowSolver::bytes_per_fluid_node() const {

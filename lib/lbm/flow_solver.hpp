@@ -116,8 +116,10 @@ class FlowSolver {
   FlowObservables observe() const;
   long steps() const;
   long fluid_nodes() const;  // of the whole lattice (all ranks)
-  // Population slots this rank sends per step to its neighbours (0 on one process).
+  // Population slots this rank sends per step to its neighbours (0 on one process), and the
+  // wall seconds this rank spent in the halo exchange so far (waiting for slower ranks included).
   double halo_slots_per_step() const;
+  double halo_seconds() const;
   // Storage per fluid node: populations + link table (+ interpolated-wall data, averaged); on
   // several ranks the storage of all ranks (halo included) over the lattice's fluid nodes.
   double bytes_per_fluid_node() const;

@@ -67,6 +67,7 @@ struct FlowSolver::Impl {
   std::vector<long> slab_start;
   long first_node = 0, global_fluid = 0;
   HaloExchange halo;
+  double halo_seconds = 0;  // wall time in the halo exchange (waiting for the neighbours included)
   // Between build_link_table and the halo's construction only.
   std::vector<GhostSlot> pending_ghosts;
   std::function<std::uint32_t(long site, int q)> own_slot;
