@@ -7,7 +7,6 @@
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 src=${CMP_SRC:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
-lbflow="$bin/lbflow" percolate="$bin/percolate" shellpack="$bin/shellpack"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
 cli_tool=lbflow
 if [ "${1:-}" != --list ] && ! grep -q '^CMP_MPI:BOOL=ON' "$bin/../CMakeCache.txt" 2>/dev/null; then
@@ -15,6 +14,7 @@ if [ "${1:-}" != --list ] && ! grep -q '^CMP_MPI:BOOL=ON' "$bin/../CMakeCache.tx
   exit 77
 fi
 [ "${1:-}" = --list ] || bin=$(cd "$bin" && pwd)
+lbflow="$bin/lbflow" percolate="$bin/percolate" shellpack="$bin/shellpack"
 # OpenMPI as a test runs it: any number of ranks on this machine's cores, as root too, the
 # PMIx security plugin that needs no munge; -q: no banner besides lbflow's own line.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PMIX_MCA_psec=native OMP_NUM_THREADS=1
@@ -112,6 +112,19 @@ case_memory_falls_with_ranks() {  # under 900 MB per process: one process cannot
   mpirun -np 4 sh -c 'ulimit -v 900000; exec "$0" "$@"' "$lbflow" "${big_run[@]}" -q -o four.csv 2>err.txt ||
     fail "4 ranks under 900 MB each: $(cat err.txt)"
   [ "$(rows four.csv | tail -1 | cut -d, -f1)" = cluster.vtk ] || fail "no row: $(cat four.csv)"
+}
+
+case_srun_two_ranks() {  # Slurm's launcher: the single-node slurm-wlm of make test-slurm (scripts/study/slurm_local.sh)
+  sphere_array
+  "$lbflow" array.xyz --delta 0.0625 --refine 1 -q -o one.csv || fail "one process"
+  # (without OMP_NUM_THREADS: slurm_local.sh gives the node $(nproc) CPUs, and nproc obeys it)
+  env -u OMP_NUM_THREADS "$src/scripts/study/slurm_local.sh" start "$cli_scratch/slurm" >/dev/null || fail "Slurm did not start"
+  trap '"$src/scripts/study/slurm_local.sh" stop "$cli_scratch/slurm"; rm -rf "$cli_scratch"' EXIT
+  # --mpi=pmix: OpenMPI's ranks find each other through Slurm's PMIx (MpiDefault is none here).
+  SLURM_CONF="$cli_scratch/slurm/slurm.conf" timeout 120 srun --mpi=pmix -N 1 -n 2 -c 1 "$lbflow" array.xyz --delta 0.0625 --refine 1 -q \
+    -o two.csv 2>err.txt || fail "srun -n 2: $(cat err.txt)"
+  grep -q "(ranks=2 threads=1 per rank)" two.csv || fail "not 2 ranks: $(grep provenance two.csv)"
+  [ "$(rows one.csv)" = "$(rows two.csv)" ] || fail "srun rows differ"
 }
 
 run_cases "$@"
