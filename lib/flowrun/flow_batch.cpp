@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <omp.h>
 #include <optional>
@@ -23,6 +24,8 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   const bool root = comm.root();
   // The decomposition, in the tables' provenance (the results do not depend on it, bit for bit).
   const std::string decomposition = fmt::format(" (ranks={} threads={} per rank)", comm.size(), omp_get_max_threads());
+  if (comm.size() > 1 && std::find(o.inputs.begin(), o.inputs.end(), "-") != o.inputs.end())
+    throw UsageError("'-' (standard input) reaches only rank 0 under mpirun: give the input as a file");
   std::vector<FlowCase> cases;
   comm.agree([&] {
     for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));

@@ -87,6 +87,12 @@ case_more_ranks_than_slabs() {
     mpirun -np 5 "$lbflow" array.xyz --delta 0.0625 --refine 1 -o out.csv
 }
 
+case_standard_input_refused() {
+  sphere_array
+  expect_error 2 "'-' (standard input) reaches only rank 0 under mpirun" \
+    mpirun -np 2 "$lbflow" - --delta 0.0625 --refine 1 -o out.csv < array.xyz
+}
+
 case_checkpoint_of_another_lattice() {
   sphere_array
   "$lbflow" array.xyz --delta 0.0625 --refine 1 --max-steps 100 --checkpoint run.ckpt -q -o /dev/null 2>/dev/null
