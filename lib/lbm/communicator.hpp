@@ -18,7 +18,8 @@ class Communicator {
   // One process, no MPI.
   Communicator() = default;
   // MPI_COMM_WORLD, initialised on the first call, when a launcher started this process
-  // (launched_by_mpi()); else one process. A build without MPI started by a launcher on more
+  // (launched_by_mpi()) with more than one task; else one process (MPI untouched). srun
+  // with several tasks but no MPI plugin (no PMI variables) throws cmp::UsageError. A build without MPI started by a launcher on more
   // than one rank throws cmp::UsageError (every rank would run the whole flow).
   static Communicator world();
   // Finalises MPI if world() initialised it (call once, at the end of main).

@@ -18,4 +18,12 @@ inline int launched_size() {
   return 1;
 }
 
+// Whether a process manager the MPI library can talk to started this process (mpirun, or
+// srun with an MPI plugin); srun alone sets only SLURM_* variables.
+inline bool has_process_manager() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMI_RANK", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
 }  // namespace cmp::lbm::comm_detail
