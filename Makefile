@@ -9,9 +9,10 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEB_PACKAGES := build-essential cmake libeigen3-dev libcgal-dev libgsl-dev libboost-dev \
   libgmp-dev libmpfr-dev catch2 libcli11-dev libfmt-dev gnuplot-nox \
   help2man python3 python3-numpy python3-scipy python3-ase python3-meshio python3-vtk9 \
-  python3-matplotlib parallel xvfb xauth slurmd slurmctld slurm-client munge
+  python3-matplotlib parallel xvfb xauth slurmd slurmctld slurm-client munge \
+  libopenmpi-dev openmpi-bin
 # Only make bench needs these (Palabos 1.5 beside lbflow's kernel): tests and the demo never do.
-BENCH_PACKAGES := libplb-dev libopenmpi-dev
+BENCH_PACKAGES := libplb-dev
 
 .PHONY: all deps configure test test-asan bench bench-compare tables jamming-figure percolation-figure jam2d-figures chamber-figures flow-figure shell-figures compress-figures run install clean clean-results
 

@@ -20,8 +20,9 @@ namespace cmp::flowrun {
 
 // Writes the checkpoint atomically (io::AtomicOutput: a run killed while writing leaves the
 // previous checkpoint intact). Throws cmp::InputError(path, 0, ...) when it cannot be written.
+// On several ranks (comm): collective; rank 0 writes the file, the others send it their state.
 void write_checkpoint(const std::string& path, const std::vector<std::string>& args, const lbm::FlowSolver& solver,
-                      const std::vector<lbm::FlowObservables>& history);
+                      const std::vector<lbm::FlowObservables>& history, const lbm::Communicator& comm = {});
 
 // The arguments a checkpoint was written with. Throws cmp::InputError(path, line, ...) when the
 // file is missing or is not an lbflow checkpoint.
@@ -31,6 +32,8 @@ std::vector<std::string> read_checkpoint_args(const std::string& path);
 // ...) as read_checkpoint_args, and when the state belongs to another run (its fingerprint
 // differs from solver's: another input, refinement, collision model, tau, drive, ...) or is
 // truncated; the solver is then unchanged.
-std::vector<lbm::FlowObservables> load_checkpoint(const std::string& path, lbm::FlowSolver& solver);
+// Every rank reads the file and keeps its own nodes (a run saved on k ranks resumes on any number).
+std::vector<lbm::FlowObservables> load_checkpoint(const std::string& path, lbm::FlowSolver& solver,
+                                                  const lbm::Communicator& comm = {});
 
 }  // namespace cmp::flowrun

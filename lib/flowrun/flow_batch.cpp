@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
+#include <omp.h>
 #include <optional>
 
 namespace cmp::flowrun {
@@ -16,14 +18,25 @@ namespace cmp::flowrun {
 void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   // Every input is read and checked first: a bad or non-percolating one stops the run
   // before any output is written.
+  // On several ranks every rank reads every input (and holds its pore mask); only rank 0
+  // writes the outputs and prints.
+  const lbm::Communicator& comm = o.run.comm;
+  const bool root = comm.root();
+  // The decomposition, in the tables' provenance (the results do not depend on it, bit for bit).
+  const std::string decomposition = fmt::format(" (ranks={} threads={} per rank)", comm.size(), omp_get_max_threads());
+  if (comm.size() > 1 && std::find(o.inputs.begin(), o.inputs.end(), "-") != o.inputs.end())
+    throw UsageError("'-' (standard input) reaches only rank 0 under mpirun: give the input as a file");
   std::vector<FlowCase> cases;
-  for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
+  comm.agree([&] {
+    for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
+  });
   // The outputs' temporaries appear with their first row, not while the first flow runs.
-  io::AtomicOutput csv_out(o.csv);
+  std::optional<io::AtomicOutput> csv_out;
+  if (root) csv_out.emplace(o.csv);
   std::optional<io::CsvWriter> csv;
   std::optional<io::AtomicOutput> history_out;
   std::optional<io::CsvWriter> history;
-  if (!o.history.empty()) history_out.emplace(o.history);
+  if (!o.history.empty() && root) history_out.emplace(o.history);
   std::vector<std::string> stalled;
   // A VTK field that cannot be written (a full disk) does not discard the table: said after it.
   std::optional<InputError> vtk_failure;
@@ -34,7 +47,9 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
       FlowRun runner(c, o.run);
       out = runner.run();
       if (!o.vtk_names[i].empty()) try {
-          write_flow_vtk(o.vtk_names[i], runner.field(out),
+          FlowField field = runner.field(out);  // collective: gathered on rank 0
+          if (root)
+            write_flow_vtk(o.vtk_names[i], field,
                          fmt::format("lbflow flow field of {} M={} (lengths in the input's units, velocity and "
                                      "density in lattice units) | {}", c.file, c.refine, provenance));
         } catch (const InputError& e) {
@@ -42,16 +57,17 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
         }
     }
     c.release_lattice();
+    if (!root) continue;
     if (!csv) {
-      csv.emplace(csv_out.stream());
-      write_flow_meta(*csv, provenance, o.run.flow, o.run.convergence);
+      csv.emplace(csv_out->stream());
+      write_flow_meta(*csv, provenance + decomposition, o.run.flow, o.run.convergence);
       csv->header(flow_columns(o.timings));
     }
     csv->row(flow_row(c, o.run.flow, out, o.timings));
     if (history_out) {
       if (!history) {
         history.emplace(history_out->stream());
-        history->meta("provenance", provenance);
+        history->meta("provenance", provenance + decomposition);
         history->meta("change", "max of the relative changes of kappa and tau_H over the last --window checks");
         history->header(history_columns());
       }
@@ -72,7 +88,8 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
                                     o.run.convergence.window, io::format_number(o.run.convergence.tol), o.resume_hint));
     }
   }
-  io::commit_in_order({&csv_out, history_out ? &*history_out : nullptr});
+  if (!root) return;  // rank 0 reports the outcome; main makes every rank exit with its status
+  io::commit_in_order({&*csv_out, history_out ? &*history_out : nullptr});
   if (vtk_failure)
     throw io::with_note(*vtk_failure, "the table was written: " + (o.csv == "-" ? std::string("<stdout>") : o.csv));
   if (!stalled.empty()) {

@@ -10,9 +10,10 @@
 namespace cmp::flowrun {
 
 FlowRun::FlowRun(FlowCase& c, const RunPlan& plan) : case_(c), plan_(plan) {
-  c.make_lattice();
-  solver_ = std::make_unique<lbm::FlowSolver>(c.lattice, plan.flow);
-  if (!plan.resume.empty()) earlier_ = load_checkpoint(plan.resume, *solver_);
+  // Every rank holds the pore mask (1 byte a node); the populations are cut over the ranks.
+  plan.comm.agree([&] { c.make_lattice(); });
+  solver_ = std::make_unique<lbm::FlowSolver>(c.lattice, plan.flow, plan.comm);
+  if (!plan.resume.empty()) earlier_ = load_checkpoint(plan.resume, *solver_, plan.comm);
 }
 
 FlowRun::~FlowRun() = default;
@@ -29,11 +30,12 @@ FlowOutcome FlowRun::run() {
   std::vector<lbm::FlowObservables> checks = earlier_;  // what a checkpoint records
   const auto save = [&] {
     if (plan_.checkpoint.empty()) return;
-    write_checkpoint(plan_.checkpoint, plan_.checkpoint_args, *solver_, checks);
+    write_checkpoint(plan_.checkpoint, plan_.checkpoint_args, *solver_, checks, plan_.comm);
     last_checkpoint = clock::now();
   };
   {
-    cli::ProgressBar bar("lbflow " + case_.file, static_cast<double>(plan_.convergence.max_steps), plan_.quiet);
+    cli::ProgressBar bar("lbflow " + case_.file, static_cast<double>(plan_.convergence.max_steps),
+                         plan_.quiet || !plan_.comm.root());
     bar.update(static_cast<double>(first_step));
     out.result = lbm::run_to_steady_state(
         *solver_, plan_.convergence,
@@ -46,14 +48,20 @@ FlowOutcome FlowRun::run() {
                                             : std::string("-")));
             bar.update(static_cast<double>(o.steps));
           }
+          // Rank 0's clock decides for every rank (saving is collective).
           if (!plan_.checkpoint.empty() &&
-              std::chrono::duration<double>(clock::now() - last_checkpoint).count() >= plan_.checkpoint_every)
+              plan_.comm.broadcast_flag(std::chrono::duration<double>(clock::now() - last_checkpoint).count() >=
+                                        plan_.checkpoint_every))
             save();
         },
         earlier_);
   }
   out.seconds = std::chrono::duration<double>(clock::now() - start).count();
   out.steps_run = solver_->steps() - first_step;
+  out.ranks = plan_.comm.size();
+  const double width = plan_.flow.precision == lbm::Precision::kFloat ? 4 : 8;
+  for (double slots : plan_.comm.all_gather({solver_->halo_slots_per_step()})) out.halo_bytes_per_step += width * slots;
+  out.halo_seconds = solver_->halo_seconds();
   save();
   return out;
 }

@@ -21,12 +21,15 @@ struct RunPlan {
   std::vector<std::string> checkpoint_args;  // the arguments that define the run (stored in it)
   std::string resume;                        // checkpoint to continue from ("" none)
   bool quiet = false;                        // no progress bar
+  lbm::Communicator comm;                    // the ranks the flow runs on (one process by default)
 };
 
 class FlowRun {
  public:
   // Builds the lattice (c.make_lattice()) and the solver; with plan.resume, loads its state
   // (throws cmp::InputError when it is from another run). Throws what lbm::FlowSolver throws.
+  // On several ranks (plan.comm) every member is a collective call; only rank 0 shows the
+  // progress bar, writes the checkpoint and gets the field.
   FlowRun(FlowCase& c, const RunPlan& plan);
   ~FlowRun();
   // Steps to steady state or the step cap; a progress bar (steps, kappa, its change) on a

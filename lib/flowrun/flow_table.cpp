@@ -27,7 +27,7 @@ std::vector<std::string> flow_columns(bool timings) {
                              "permeability_u2", "tortuosity", "superficial_velocity_lu", "interstitial_velocity_lu",
                              "max_speed_lu", "pressure_gradient_lu", "reynolds", "mach", "steps", "converged",
                              "bytes_per_fluid_node"};
-  if (timings) c.insert(c.end(), {"seconds", "mlups"});
+  if (timings) c.insert(c.end(), {"seconds", "mlups", "halo_bytes_per_step", "halo_seconds"});
   return c;
 }
 
@@ -54,6 +54,8 @@ std::vector<std::string> flow_row(const FlowCase& c, const lbm::FlowSettings& s,
     row.push_back(fmt::format("{:.2f}", out.seconds > 0 ? static_cast<double>(out.fluid_nodes) * out.steps_run /
                                                              out.seconds / 1e6
                                                        : 0.0));
+    row.push_back(fmt::format("{:.0f}", out.halo_bytes_per_step));
+    row.push_back(fmt::format("{:.3f}", out.halo_seconds));
   }
   return row;
 }

@@ -24,6 +24,9 @@ struct FlowOutcome {
   long interpolated_links = 0;
   long steps_run = 0;        // steps of this process (a resumed run: since the resume)
   double seconds = 0;        // wall time of the steps of this process
+  int ranks = 1;             // MPI ranks the flow ran on
+  double halo_bytes_per_step = 0;  // sent between ranks per step, all ranks together
+  double halo_seconds = 0;   // rank 0's wall time in the halo exchange
 };
 
 // Column names, in order; `timings` adds seconds and mlups (never written otherwise, so the

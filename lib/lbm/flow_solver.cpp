@@ -9,9 +9,14 @@
 
 namespace cmp::lbm {
 
-FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings) : impl_(std::make_unique<Impl>()) {
+FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
+    : FlowSolver(lattice, settings, Communicator()) {}
+
+FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings, const Communicator& comm)
+    : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.settings = settings;
+  m.comm = comm;
   m.op = collision_style(settings.collision).make(settings.collision_parameters);
   const int a = settings.axis;
   if (a < 0 || a > 2) throw UsageError("flow axis must be 0, 1 or 2, got " + std::to_string(a));
@@ -33,28 +38,37 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings)
   m.grad_p = pressure ? kCs2 * settings.density_drop / (m.n[a] - 1) : settings.body_force;
   if (!pressure) m.force[a] = settings.body_force;
 
-  const std::vector<WallFraction> fractions = m.build_link_table(lattice);
-  m.build_walls(fractions);
-
-  // Start: rest, linear density between the pressure planes.
-  const long N = m.stride;
-  const double rho_in = 1 + 0.5 * settings.density_drop;
-  auto init = [&](auto& F) {
-    F.assign(static_cast<std::size_t>(kQ * N), 0);
-    for (long i = 0; i < N; ++i) {
-      double rho = 1;
-      if (pressure && i < m.fluid) {
-        const long g = m.site[static_cast<std::size_t>(i)];
-        const int xyz[3] = {static_cast<int>(g % m.n[0]), static_cast<int>(g / m.n[0] % m.n[1]),
-                            static_cast<int>(g / m.n[0] / m.n[1])};
-        rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
+  // Everything a rank holds, allocated before the first collective call: a rank that cannot
+  // allocate its share stops every rank with one message (Communicator::agree).
+  comm.agree([&] {
+    const std::vector<WallFraction> fractions = m.build_link_table(lattice);
+    m.build_walls(fractions);
+    // Start: rest, linear density between the pressure planes (ghost nodes too, for tidiness:
+    // the halo overwrites the slots that matter).
+    const long N = m.ghost_end;
+    const double rho_in = 1 + 0.5 * settings.density_drop;
+    auto init = [&](auto& F) {
+      F.assign(static_cast<std::size_t>(kQ * N), 0);
+      for (long i = 0; i < N; ++i) {
+        double rho = 1;
+        const long ghost = i - m.stride;
+        const long g = i < m.fluid ? m.site[static_cast<std::size_t>(i)]
+                       : ghost >= 0 && ghost < static_cast<long>(m.ghost_site.size()) ? m.ghost_site[static_cast<std::size_t>(ghost)]
+                                                                                        : -1;
+        if (pressure && g >= 0) {
+          const int xyz[3] = {static_cast<int>(g % m.n[0]), static_cast<int>(g / m.n[0] % m.n[1]),
+                              static_cast<int>(g / m.n[0] / m.n[1])};
+          rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
+        }
+        for (int q = 0; q < kQ; ++q) store_population(F.data(), pop_slot(q, i), weight(q) * rho);
       }
-      for (int q = 0; q < kQ; ++q) store_population(F.data(), pop_slot(q, i), weight(q) * rho);
-    }
-  };
-  if (settings.precision == Precision::kFloat) init(m.ff);
-  else init(m.fd);
-
+    };
+    if (settings.precision == Precision::kFloat) init(m.ff);
+    else init(m.fd);
+  });
+  m.halo.build(comm, std::move(m.pending_ghosts), m.own_slot);
+  m.pending_ghosts = {};
+  m.own_slot = nullptr;
   m.fp = m.fingerprint_of(lattice);
 }
 
@@ -63,16 +77,21 @@ FlowSolver::FlowSolver(FlowSolver&&) noexcept = default;
 FlowSolver& FlowSolver::operator=(FlowSolver&&) noexcept = default;
 
 long FlowSolver::steps() const { return impl_->steps; }
-long FlowSolver::fluid_nodes() const { return impl_->fluid; }
-long FlowSolver::interpolated_links() const { return static_cast<long>(impl_->walls.size()); }
+long FlowSolver::fluid_nodes() const { return impl_->global_fluid; }
+long FlowSolver::interpolated_links() const { return impl_->comm.sum(static_cast<long>(impl_->walls.size())); }
+double FlowSolver::halo_slots_per_step() const { return impl_->halo.slots_per_step(); }
+double FlowSolver::halo_seconds() const { return impl_->halo_seconds; }
 const FlowSettings& FlowSolver::settings() const { return impl_->settings; }
 
 double FlowSolver::bytes_per_fluid_node() const {
   const Impl& m = *impl_;
   const double pop = m.settings.precision == Precision::kFloat ? sizeof(float) : sizeof(double);
-  const double total = static_cast<double>(m.stride) * (kQ * pop + 18 * sizeof(std::uint32_t)) +
+  const double total = static_cast<double>(m.ghost_end) * (kQ * pop + 18 * sizeof(std::uint32_t)) +
                        m.consecutive.size() * sizeof(std::uint32_t) + m.site.size() * sizeof(long) + m.open.size() * sizeof(PressureNode) + m.walls.size() * sizeof(WallLink);
-  return total / static_cast<double>(m.fluid);
+  // Over all ranks (each holds its halo besides its nodes).
+  double all = 0;
+  for (double t : m.comm.all_gather({total})) all += t;
+  return all / static_cast<double>(m.global_fluid);
 }
 
 double update_bytes(Precision precision) {

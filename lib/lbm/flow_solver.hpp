@@ -24,10 +24,12 @@
 // Layout along the flow axis: fluid nodes are numbered brick by brick (lbm/layout.hpp: bricks
 // of 16 planes along the flow axis, a few rows wide across it, so that an odd step's neighbours
 // in the next plane are near in memory), and 16 planes are one contiguous node range. Threads
-// take fixed chunks of that range (dynamic hand-out, lib/core/fixed_chunks.hpp). A later MPI
-// split along the axis gives each rank a contiguous range of 16-plane slabs; the links
-// that leave a rank's range (the only ones to neighbouring planes) become halo slots
-// exchanged after each step, with no change to the kernel.
+// take fixed chunks of that range (dynamic hand-out, lib/core/fixed_chunks.hpp). On several MPI
+// ranks each rank owns a contiguous range of 16-plane slabs (lbm/slab_decomposition.hpp); the
+// links that leave its range (the only ones to neighbouring planes) point into ghost nodes
+// whose slots are exchanged after each step (lbm/halo_exchange.hpp), with no change to the
+// kernel. Observables are summed slab by slab, the slabs' sums then added in slab order on
+// every rank: the same bits on one process and on any number of ranks.
 //
 // Driving (FlowSettings::driving):
 //  - kPressure: periodic along the two other axes; along the flow axis the box is open, with
@@ -49,6 +51,7 @@
 // Observables (observe()): kappa_lu = nu <u_axis> / |grad p|, <u_axis> the superficial mean
 // over the WHOLE box (solid nodes count as zero velocity), nu = (tau - 1/2)/3, rho_0 = 1.
 #include "lbm/collision.hpp"
+#include "lbm/communicator.hpp"
 #include "lbm/pore_lattice.hpp"
 
 #include <cstdint>
@@ -98,6 +101,11 @@ class FlowSolver {
   // collision, axis not 0..2, drop or force not finite, fewer than 2 planes along the axis,
   // a lattice of the wrong size, no fluid node, more than 2^32/19 nodes).
   FlowSolver(const PoreLattice& lattice, const FlowSettings& settings);
+  // The same flow on the ranks of `comm` (lbm/communicator.hpp), each holding its slabs
+  // (lbm/slab_decomposition.hpp) and their halo (lbm/halo_exchange.hpp): a collective call, as
+  // are step(), observe(), the fields, save() and load(); every rank gets the same observables,
+  // bit for bit those of one process. Throws cmp::UsageError when ranks exceed slabs.
+  FlowSolver(const PoreLattice& lattice, const FlowSettings& settings, const Communicator& comm);
   ~FlowSolver();
   FlowSolver(FlowSolver&&) noexcept;
   FlowSolver& operator=(FlowSolver&&) noexcept;
@@ -107,8 +115,13 @@ class FlowSolver {
   // Macroscopic observables of the current state (ordered reductions: thread-independent).
   FlowObservables observe() const;
   long steps() const;
-  long fluid_nodes() const;
-  // Storage per fluid node: populations + link table (+ interpolated-wall data, averaged).
+  long fluid_nodes() const;  // of the whole lattice (all ranks)
+  // Population slots this rank sends per step to its neighbours (0 on one process), and the
+  // wall seconds this rank spent in the halo exchange so far (waiting for slower ranks included).
+  double halo_slots_per_step() const;
+  double halo_seconds() const;
+  // Storage per fluid node: populations + link table (+ interpolated-wall data, averaged); on
+  // several ranks the storage of all ranks (halo included) over the lattice's fluid nodes.
   double bytes_per_fluid_node() const;
   // Memory traffic of one step per fluid node: update_bytes() over every node the sweep covers
   // (the last block's padding included), plus the per-block bits of lbm/layout.hpp's
@@ -120,7 +133,8 @@ class FlowSolver {
   const FlowSettings& settings() const;
 
   // Fields on the full nx*ny*nz grid (x fastest), for VTK output: velocity 3 values per node
-  // interleaved (solid nodes 0), density (solid nodes 0).
+  // interleaved (solid nodes 0), density (solid nodes 0). On several ranks: gathered on rank 0
+  // (empty on the others).
   std::vector<double> velocity_field() const;
   std::vector<double> density_field() const;
 

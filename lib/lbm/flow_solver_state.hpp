@@ -10,14 +10,18 @@
 //   lbm/flow_solver.cpp         settings checks, construction order, initial state
 #include "lbm/flow_solver.hpp"
 
+#include "lbm/communicator.hpp"
 #include "lbm/d3q19.hpp"
+#include "lbm/halo_exchange.hpp"
 #include "lbm/huge_pages.hpp"
 #include "lbm/layout.hpp"
+#include "lbm/slab_decomposition.hpp"
 
 #include "core/fixed_chunks.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -49,8 +53,24 @@ struct PressureNode {
 struct FlowSolver::Impl {
   FlowSettings settings;
   int n[3] = {0, 0, 0};
-  long fluid = 0, stride = 0, steps = 0;
-  std::vector<long> site;              // fluid node -> grid index
+  // This rank's own fluid nodes are [0, fluid) (the sweep covers [0, stride)); its ghost nodes
+  // (lbm/halo_exchange.hpp) are [stride, ghost_end). One process: no ghosts, ghost_end = stride.
+  long fluid = 0, stride = 0, ghost_end = 0, steps = 0;
+  std::vector<long> site;              // own fluid node -> grid index
+  std::vector<long> ghost_site;        // ghost node stride + k -> grid index
+  // The decomposition (lbm/slab_decomposition.hpp): this rank's slabs [first_slab, first_slab +
+  // slab_start.size() - 1), slab k's own nodes [slab_start[k - first_slab], slab_start[k - first_slab + 1]);
+  // own node i is node first_node + i of the whole lattice's numbering (global_fluid nodes).
+  Communicator comm;
+  SlabDecomposition decomposition;
+  int first_slab = 0;
+  std::vector<long> slab_start;
+  long first_node = 0, global_fluid = 0;
+  HaloExchange halo;
+  double halo_seconds = 0;  // wall time in the halo exchange (waiting for the neighbours included)
+  // Between build_link_table and the halo's construction only.
+  std::vector<GhostSlot> pending_ghosts;
+  std::function<std::uint32_t(long site, int q)> own_slot;
   BigVector<std::uint32_t> links;     // 18 * (stride + padding)
   std::vector<std::uint32_t> consecutive;  // per block: consecutive_lines() (empty when no chunk uses it)
   std::vector<char> chunk_consecutive;     // per chunk: whether its odd sweeps use `consecutive`
@@ -77,8 +97,9 @@ struct FlowSolver::Impl {
     return after_odd ? pop_slot(q, node) : links[link_index(opposite(q), node)];
   }
 
-  // link_table.cpp: numbers the fluid nodes (site, fluid, stride, chunks), fills the link
-  // table, the pressure-plane nodes, wall_links and the consecutive lines; returns the wall
+  // link_table.cpp: cuts the slabs over the ranks, numbers this rank's fluid nodes and ghost
+  // nodes (site, ghost_site, fluid, stride, ghost_end, chunks), fills the link table, the
+  // pressure-plane nodes, wall_links, the consecutive lines and the halo; returns the wall
   // links that need interpolation.
   std::vector<WallFraction> build_link_table(const PoreLattice& lattice);
   // interpolated_walls.cpp
@@ -98,6 +119,7 @@ struct FlowSolver::Impl {
   void gather(const BigVector<Real>& F, long node, double f[kQ]) const;
   template <class Real>
   FlowObservables observe() const;
+  std::vector<double> field_records() const;  // collective: on rank 0 all ranks' (site, u, rho)
   // flow_checkpoint.cpp
   std::uint64_t fingerprint_of(const PoreLattice& lattice) const;
 };

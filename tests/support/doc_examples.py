@@ -143,6 +143,10 @@ class Runner:
         self.bin, self.src, self.size, self.scratch = args.bin, args.src, args.size, scratch
         self.build = os.path.dirname(os.path.abspath(self.bin))
         self.env = dict(os.environ, PATH=f"{self.bin}:{os.environ['PATH']}", OMP_NUM_THREADS="2")
+        # mpirun as the pages write it (docs/lbflow.md, "Across machines"): more ranks than this
+        # machine's cores, as root too, PMIx without munge; -q's quiet as the default.
+        self.env.update(OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+                        OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", PMIX_MCA_psec="native")
         self.slurm = None
 
     def rewrite(self, command):

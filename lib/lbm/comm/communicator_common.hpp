@@ -1,0 +1,29 @@
+#pragma once
+// Parts both communicator implementations share (internal to lib/lbm).
+#include <cstdlib>
+
+namespace cmp::lbm::comm_detail {
+
+// The environment a launcher sets: OpenMPI's mpirun, PMI(x) (srun, hydra), Slurm's srun.
+inline bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+// The number of ranks the launcher started (1 when it does not say).
+inline int launched_size() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"})
+    if (const char* s = std::getenv(v)) return std::atoi(s);
+  return 1;
+}
+
+// Whether a process manager the MPI library can talk to started this process (mpirun, or
+// srun with an MPI plugin); srun alone sets only SLURM_* variables.
+inline bool has_process_manager() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMI_RANK", "PMIX_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+}  // namespace cmp::lbm::comm_detail
