@@ -1,5 +1,7 @@
 #pragma once
 // Parts both communicator implementations share (internal to lib/lbm).
+#include "io/parse_number.hpp"
+
 #include <cstdlib>
 
 namespace cmp::lbm::comm_detail {
@@ -11,10 +13,13 @@ inline bool launched_by_mpi() {
   return false;
 }
 
-// The number of ranks the launcher started (1 when it does not say).
+// The number of ranks the launcher started (1 when it does not say, or says no whole number).
 inline int launched_size() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"})
-    if (const char* s = std::getenv(v)) return std::atoi(s);
+    if (const char* s = std::getenv(v)) {
+      long long n = 0;
+      return io::try_parse_integer(s, n) && n >= 1 && n <= 1 << 20 ? static_cast<int>(n) : 1;
+    }
   return 1;
 }
 
