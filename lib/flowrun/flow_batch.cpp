@@ -24,19 +24,20 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   const bool root = comm.root();
   // The decomposition, in the tables' provenance (the results do not depend on it, bit for bit).
   const std::string decomposition = fmt::format(" (ranks={} threads={} per rank)", comm.size(), omp_get_max_threads());
-  if (comm.size() > 1 && std::find(o.inputs.begin(), o.inputs.end(), "-") != o.inputs.end())
-    throw UsageError("'-' (standard input) reaches only rank 0 under mpirun: give the input as a file");
   std::vector<FlowCase> cases;
   comm.agree([&] {
+    if (comm.size() > 1 && std::find(o.inputs.begin(), o.inputs.end(), "-") != o.inputs.end())
+      throw UsageError("'-' (standard input) reaches only rank 0 under mpirun: give the input as a file");
     for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
   });
   // The outputs' temporaries appear with their first row, not while the first flow runs.
-  std::optional<io::AtomicOutput> csv_out;
-  if (root) csv_out.emplace(o.csv);
-  std::optional<io::CsvWriter> csv;
-  std::optional<io::AtomicOutput> history_out;
-  std::optional<io::CsvWriter> history;
-  if (!o.history.empty() && root) history_out.emplace(o.history);
+  std::optional<io::AtomicOutput> csv_out, history_out;
+  comm.agree([&] {  // (an output rank 0 cannot open stops every rank with its message)
+    if (!root) return;
+    csv_out.emplace(o.csv);
+    if (!o.history.empty()) history_out.emplace(o.history);
+  });
+  std::optional<io::CsvWriter> csv, history;
   std::vector<std::string> stalled;
   // A VTK field that cannot be written (a full disk) does not discard the table: said after it.
   std::optional<InputError> vtk_failure;
@@ -88,6 +89,7 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
                                     o.run.convergence.window, io::format_number(o.run.convergence.tol), o.resume_hint));
     }
   }
+  comm.past_collectives();
   if (!root) return;  // rank 0 reports the outcome; main makes every rank exit with its status
   io::commit_in_order({&*csv_out, history_out ? &*history_out : nullptr});
   if (vtk_failure)

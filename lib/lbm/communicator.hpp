@@ -44,8 +44,8 @@ class Communicator {
   // Point to point (blocking), any size (cut into pieces below MPI's int counts).
   void send(int to, int tag, const void* data, std::size_t bytes) const;
   void recv(int from, int tag, void* data, std::size_t bytes) const;
-  // Non-blocking exchange with a few peers: sends[k] to peers[k], receives recvs[k] from
-  // peers[k] (sizes known to both sides), then waits for all.
+  // Non-blocking exchange with a few peers: each Transfer sends `send` to `peer` and receives
+  // `recv` from it (sizes known to both sides), then waits for all.
   struct Transfer {
     int peer;
     const void* send;
@@ -60,6 +60,17 @@ class Communicator {
   // (an error every rank meets, as bad input, reads as on one process). Lets a rank that cannot
   // allocate its share stop all of them, one message, the same exit status everywhere.
   void agree(const std::function<void()>& body) const;
+  // Whether the error this rank is leaving with strands no other rank: thrown by agree() (so by
+  // every rank together), or after past_collectives(). Any other error after the ranks started
+  // talking may leave the others waiting in a collective (a rank 0 that cannot gather the VTK
+  // field, an output that fails on rank 0).
+  static bool error_agreed();
+  // Says that this rank makes no more collective calls in this run but main's status reduction:
+  // an error from here on is reported as usual.
+  void past_collectives() const;
+  // For such an error: writes "lbflow: rank R: message" to `error_fd` (this rank's real standard
+  // error) and ends every rank at once with `status` (MPI_Abort). On one process: returns.
+  void abort_all(const std::string& message, int status, int error_fd) const;
 
  private:
   int rank_ = 0, size_ = 1;

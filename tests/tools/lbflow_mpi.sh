@@ -112,6 +112,17 @@ case_rank_cannot_allocate() {  # rank 1 alone under a limit its half (650 MB) do
     mpirun -np 2 sh -c '[ "$OMPI_COMM_WORLD_RANK" = 1 ] && ulimit -v 500000; exec "$0" "$@"' "$lbflow" "${big_run[@]}" -o out.csv
 }
 
+case_rank_0_cannot_gather_the_field() {  # rank 0 holds its half but not the whole VTK field: it names itself and ends every rank, no hang
+  cluster
+  timeout 120 mpirun -np 2 sh -c '[ "$OMPI_COMM_WORLD_RANK" = 0 ] && ulimit -v 1100000; exec "$0" "$@"' \
+    "$lbflow" "${big_run[@]}" -o out.csv --vtk out.vtk 2>err.txt
+  local got=$?
+  [ "$got" -eq 1 ] || fail "exited $got (124: a rank hung), expected 1: $(cat err.txt)"
+  # (OpenMPI's MPI_Abort notice follows lbflow's line)
+  [ "$(head -1 err.txt)" = "lbflow: rank 0: out of memory" ] || fail "first line: $(cat err.txt)"
+  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "left a file behind: $(ls -a)"
+}
+
 case_memory_falls_with_ranks() {  # under 900 MB per process: one process cannot hold it, four ranks can
   cluster
   sh -c 'ulimit -v 900000; exec "$0" "$@"' "$lbflow" "${big_run[@]}" -o one.csv 2>err.txt

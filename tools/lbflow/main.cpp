@@ -28,6 +28,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <new>
 #include <iostream>
 #include <set>
 
@@ -102,7 +103,8 @@ void declare(cli::Tool& tool, Options& o) {
                   cli::non_negative());
   app.add_option("--resume", o.resume, "continue the run saved in this checkpoint (alone: with its arguments)");
   app.add_flag("--timings", o.timings,
-               "add seconds and mlups (fluid-node updates per second) to the CSV and to the summary on stderr, "
+               "add seconds, mlups (fluid-node updates per second), halo_bytes_per_step and halo_seconds (MPI ranks) to "
+               "the CSV, and seconds and mlups to the summary on stderr, "
                "which it prints even with -q");
   tool.add_common(app, o.common, cli::Tool::kThreads | cli::Tool::kQuiet);
 }
@@ -161,10 +163,12 @@ Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& ar
 
 int main(int argc, char** argv) {
   lbm::Communicator comm;  // one process, until a launcher says otherwise
+  int error_fd = 2;         // this rank's own standard error, for an error no other rank shares
   int status = cli::run_tool("lbflow", [&] {
     // Under mpirun or srun: every rank runs this main; rank 0 alone prints and writes.
     comm = lbm::Communicator::world();
     if (!comm.root()) {  // (at the descriptors: the interrupt handler writes to fd 2 itself)
+      error_fd = ::dup(2);
       const int null = ::open("/dev/null", O_WRONLY);
       if (null >= 0) ::dup2(null, 1), ::dup2(null, 2), ::close(null);
     }
@@ -204,10 +208,21 @@ int main(int argc, char** argv) {
                              o.drive == "force" ? "body-force" : "density-drop",
                              o.checkpoint.empty() ? "" : "; continue with lbflow --resume " + o.checkpoint + " --max-steps N"};
     batch.run.comm = comm;
-    flowrun::run_flow_batch(batch, cli::provenance("lbflow", argc, argv));
+    try {
+      flowrun::run_flow_batch(batch, cli::provenance("lbflow", argc, argv));
+    } catch (const std::exception& e) {
+      // Met by this rank alone (not through agree): the others may be waiting for it in a
+      // collective, so it names itself and ends them all rather than hang.
+      if (!lbm::Communicator::error_agreed()) {
+        const bool bad_input = dynamic_cast<const UsageError*>(&e) || dynamic_cast<const InputError*>(&e);
+        comm.abort_all(dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what(),
+                       bad_input ? cli::kBadInput : cli::kComputationFailed, error_fd);
+      }
+      throw;
+    }
     return 0;
   });
-  // Every rank exits with the same status (rank 0's error, said once).
+  // Every rank exits with the same status (the highest; an agreed error is said once, by rank 0).
   status = comm.max(status);  // (a collective: no rank leaves before all have their status)
   // mpirun ends the others when the first rank exits non-zero: past this point that is no
   // interruption (and rank 0's exit status is the one mpirun returns).

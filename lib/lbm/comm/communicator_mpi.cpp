@@ -12,11 +12,15 @@
 #include <exception>
 #include <new>
 #include <numeric>
+#include <string>
+
+#include <unistd.h>
 
 namespace cmp::lbm {
 
 namespace {
 bool g_initialised = false;
+bool g_error_agreed = false;  // the last agree() threw (reset by every agree), or past_collectives()
 constexpr std::size_t kPiece = std::size_t{1} << 30;  // bytes per message piece (MPI counts are int)
 
 void mpi_check(int rc, const char* what) {
@@ -172,6 +176,7 @@ void Communicator::exchange(const std::vector<Transfer>& transfers, int tag) con
 
 void Communicator::agree(const std::function<void()>& body) const {
   if (!mpi_) return body();
+  g_error_agreed = false;
   // kind: 0 ok, 1 bad input (exit 2), 2 computation failed (exit 1).
   int kind = 0;
   std::string message;
@@ -196,11 +201,22 @@ void Communicator::agree(const std::function<void()>& body) const {
   mpi_check(MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD), "MPI_Bcast");
   message.resize(static_cast<std::size_t>(length));
   mpi_check(MPI_Bcast(message.data(), length, MPI_CHAR, first, MPI_COMM_WORLD), "MPI_Bcast");
+  g_error_agreed = true;
   // Rank 0 failed: its own error, as on one process (the others print nothing).
   if (first == 0 && rank_ == 0) std::rethrow_exception(error);
   if (first != 0) message = "rank " + std::to_string(first) + ": " + message;
   if (k == 1) throw UsageError(message);
   throw ComputationError(message);
+}
+
+bool Communicator::error_agreed() { return g_error_agreed; }
+void Communicator::past_collectives() const { g_error_agreed = true; }
+
+void Communicator::abort_all(const std::string& message, int status, int error_fd) const {
+  if (!mpi_) return;
+  const std::string line = "lbflow: rank " + std::to_string(rank_) + ": " + message + "\n";
+  if (error_fd >= 0) [[maybe_unused]] const auto written = ::write(error_fd, line.data(), line.size());
+  MPI_Abort(MPI_COMM_WORLD, status);
 }
 
 }  // namespace cmp::lbm
