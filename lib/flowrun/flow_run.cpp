@@ -58,7 +58,6 @@ FlowOutcome FlowRun::run() {
   }
   out.seconds = std::chrono::duration<double>(clock::now() - start).count();
   out.steps_run = solver_->steps() - first_step;
-  out.ranks = plan_.comm.size();
   const double width = plan_.flow.precision == lbm::Precision::kFloat ? 4 : 8;
   for (double slots : plan_.comm.all_gather({solver_->halo_slots_per_step()})) out.halo_bytes_per_step += width * slots;
   out.halo_seconds = solver_->halo_seconds();

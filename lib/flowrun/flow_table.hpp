@@ -24,13 +24,12 @@ struct FlowOutcome {
   long interpolated_links = 0;
   long steps_run = 0;        // steps of this process (a resumed run: since the resume)
   double seconds = 0;        // wall time of the steps of this process
-  int ranks = 1;             // MPI ranks the flow ran on
   double halo_bytes_per_step = 0;  // sent between ranks per step, all ranks together
   double halo_seconds = 0;   // rank 0's wall time in the halo exchange
 };
 
-// Column names, in order; `timings` adds seconds and mlups (never written otherwise, so the
-// same input gives the same bytes).
+// Column names, in order; `timings` adds seconds, mlups, halo_bytes_per_step and halo_seconds
+// (never written otherwise, so the same input gives the same numbers).
 std::vector<std::string> flow_columns(bool timings);
 
 // The row of one run, formatted (numbers round-trip; unknown units such as D0 for an image

@@ -66,7 +66,7 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings,
     if (settings.precision == Precision::kFloat) init(m.ff);
     else init(m.fd);
   });
-  m.halo.build(comm, std::move(m.pending_ghosts), m.own_slot);
+  m.halo.build(m.comm, std::move(m.pending_ghosts), m.own_slot);  // m.comm: comm may be a temporary
   m.pending_ghosts = {};
   m.own_slot = nullptr;
   m.fp = m.fingerprint_of(lattice);

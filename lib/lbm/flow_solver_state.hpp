@@ -71,7 +71,7 @@ struct FlowSolver::Impl {
   // Between build_link_table and the halo's construction only.
   std::vector<GhostSlot> pending_ghosts;
   std::function<std::uint32_t(long site, int q)> own_slot;
-  BigVector<std::uint32_t> links;     // 18 * (stride + padding)
+  BigVector<std::uint32_t> links;     // 18 * ghost_end
   std::vector<std::uint32_t> consecutive;  // per block: consecutive_lines() (empty when no chunk uses it)
   std::vector<char> chunk_consecutive;     // per chunk: whether its odd sweeps use `consecutive`
   BigVector<double> fd;                // populations (double storage)
@@ -99,8 +99,9 @@ struct FlowSolver::Impl {
 
   // link_table.cpp: cuts the slabs over the ranks, numbers this rank's fluid nodes and ghost
   // nodes (site, ghost_site, fluid, stride, ghost_end, chunks), fills the link table, the
-  // pressure-plane nodes, wall_links, the consecutive lines and the halo; returns the wall
-  // links that need interpolation.
+  // pressure-plane nodes, wall_links, the consecutive lines, and the ghost slots the halo is
+  // built from (pending_ghosts, own_slot: flow_solver.cpp); returns the wall links that need
+  // interpolation.
   std::vector<WallFraction> build_link_table(const PoreLattice& lattice);
   // interpolated_walls.cpp
   void build_walls(const std::vector<WallFraction>& fractions);

@@ -24,7 +24,7 @@ inline constexpr int kBatch = 8;
 // 128^2 box, were not): bricks took bench_lbm's odd steps on two threads from 79 to 92 MLUPS
 // on the dense box and from 59.5 to 61.7 on the porous one (one thread: no change; both
 // layouts stepped in turn in one process). kBrickPlanes planes are still one
-// contiguous node range, so a later MPI split along the axis gives each rank whole bricks.
+// contiguous node range, so the MPI split along the axis (slab_decomposition.hpp) gives each rank whole bricks.
 inline constexpr int kBrickPlanes = 16;
 inline constexpr int kBrickSites = 2048;  // lattice sites of one brick plane (~300 kB dense)
 constexpr int brick_rows(int row_length) { return row_length >= kBrickSites ? 1 : kBrickSites / row_length; }

@@ -94,7 +94,7 @@ std::vector<WallFraction> FlowSolver::Impl::build_link_table(const PoreLattice& 
   ghost_end = stride + (static_cast<long>(ghost_site.size()) + kBatch - 1) / kBatch * kBatch;
   if (static_cast<double>(ghost_end) * kQ >= 4294967295.0)
     throw UsageError("pore lattice too large: " + std::to_string(fluid) + " fluid nodes on one process (at most 2^32/19)" +
-                     (comm.size() > 1 ? "" : ": run it on several MPI ranks"));
+                     (comm.size() > 1 || !Communicator::built_with_mpi() ? "" : ": run it on several MPI ranks"));
   chunks = static_cast<int>(std::clamp<long>(stride / (kBatch * 256), 1, 64));
 
   // Link table and boundary lists.

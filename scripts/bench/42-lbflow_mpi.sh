@@ -19,8 +19,12 @@ else
     local launch=()
     [ "$1" -gt 0 ] && launch=(env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PMIX_MCA_psec=native
                               mpirun -q --oversubscribe -np "$1")
-    "${launch[@]}" "$build/bin/lbflow" "$mpi_dir/c.vtk" --refine "$M" --threads "$2" --max-steps "$steps" \
-      --check-every "$steps" --timings -q -o "$mpi_dir/f.csv" 2>/dev/null || true
+    rm -f "$mpi_dir/f.csv"  # a failed run must not report the row before it
+    if ! "${launch[@]}" "$build/bin/lbflow" "$mpi_dir/c.vtk" --refine "$M" --threads "$2" --max-steps "$steps" \
+      --check-every "$steps" --timings -q -o "$mpi_dir/f.csv" 2>"$mpi_dir/err.txt"; then
+      echo "== lbflow on $1 rank(s) x $2 thread(s) failed: $(tail -1 "$mpi_dir/err.txt")" >&2
+      return
+    fi
     /usr/bin/python3 - "$mpi_dir/f.csv" "$1" "$2" <<'PY'
 import csv, sys
 r = next(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
