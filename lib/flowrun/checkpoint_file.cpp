@@ -3,6 +3,7 @@
 #include "io/atomic_output.hpp"
 #include "io/checkpoint_file.hpp"
 
+#include <fstream>
 #include <optional>
 #include <ostream>
 
@@ -35,13 +36,12 @@ std::vector<std::string> read_checkpoint_args(const std::string& path) {
 
 std::vector<lbm::FlowObservables> load_checkpoint(const std::string& path, lbm::FlowSolver& solver,
                                                   const lbm::Communicator& comm) {
-  std::vector<lbm::FlowObservables> history;
+  std::ifstream in;
   comm.agree([&] {
-    auto in = io::open_checkpoint(path);
+    in = io::open_checkpoint(path);
     io::read_checkpoint_header(in, path, kMagic, kWhat, true);
-    history = solver.load(in, path);
   });
-  return history;
+  return solver.load(in, path);  // agrees on its own reading; its halo fill is collective
 }
 
 }  // namespace cmp::flowrun

@@ -165,7 +165,11 @@ void FlowSolver::save(std::ostream& out, const std::vector<FlowObservables>& his
 }
 
 namespace {
+// Past `bytes` of the stream: a seek (each rank reads only its own nodes of a file every rank
+// opens), a read where the stream cannot seek. A seek past the end shows as the next read failing.
 bool skip_bytes(std::istream& in, long bytes) {
+  if (in.seekg(bytes, std::ios::cur)) return true;
+  in.clear();
   in.ignore(bytes);
   return in.gcount() == bytes;
 }
@@ -173,44 +177,48 @@ bool skip_bytes(std::istream& in, long bytes) {
 
 std::vector<FlowObservables> FlowSolver::load(std::istream& in, const std::string& name) {
   Impl& m = *impl_;
-  char magic[8];
-  if (!get(in, magic, sizeof magic)) throw InputError(name, 0, "not a lattice Boltzmann checkpoint");
-  if (std::memcmp(magic, kMagicBefore, sizeof magic) == 0)
-    throw InputError(name, 0, "checkpoint written by an older lbflow (version 1 state, before MPI): run it again from the start");
-  if (std::memcmp(magic, kMagic, sizeof magic) != 0) throw InputError(name, 0, "not a lattice Boltzmann checkpoint");
-  std::uint64_t fp = 0;
-  std::int64_t steps = 0, nodes = 0;
-  std::int32_t width = 0;
-  if (!get(in, &fp, sizeof fp) || !get(in, &steps, sizeof steps) || !get(in, &nodes, sizeof nodes) ||
-      !get(in, &width, sizeof width))
-    throw InputError(name, 0, "truncated checkpoint");
-  if (fp != m.fp)
-    throw InputError(name, 0, "checkpoint is from another run (different lattice or settings)");
-  const bool f32 = m.settings.precision == Precision::kFloat;
-  if (nodes != m.global_fluid || width != (f32 ? 4 : 8) || steps < 0) throw InputError(name, 0, "checkpoint does not match the lattice");
-  const long node_bytes = kQ * static_cast<long>(width);
-  std::vector<char> mine(static_cast<std::size_t>(m.fluid * node_bytes));
-  bool ok = skip_bytes(in, m.first_node * node_bytes) && get(in, mine.data(), mine.size()) &&
-            skip_bytes(in, (m.global_fluid - m.first_node - m.fluid) * node_bytes);
-  std::uint64_t count = 0;
-  if (!ok || !get(in, &count, sizeof count) || count > (1u << 30)) throw InputError(name, 0, "truncated checkpoint");
   std::vector<FlowObservables> history;
-  for (std::uint64_t k = 0; k < count; ++k) {
-    double v[kObservableFields];
-    if (!get(in, v, sizeof v)) throw InputError(name, 0, "truncated checkpoint");
-    history.push_back(unpack(v));
-  }
-  const auto unpack_nodes = [&](auto& F) {
-    using Real = std::remove_reference_t<decltype(F[0])>;
-    const Real* v = reinterpret_cast<const Real*>(mine.data());
-    for (long i = 0; i < m.fluid; ++i)
-      for (int q = 0; q < kQ; ++q) F[pop_slot(q, i)] = v[i * kQ + q];
-  };
-  if (f32) unpack_nodes(m.ff);
-  else unpack_nodes(m.fd);
-  m.steps = steps;
+  const bool f32 = m.settings.precision == Precision::kFloat;
+  // Read and checked on every rank (a rank that cannot hold its nodes, a truncated file: every
+  // rank stops with one message); the collective halo fill comes after, outside agree.
+  m.comm.agree([&] {
+    char magic[8];
+    if (!get(in, magic, sizeof magic)) throw InputError(name, 0, "not a lattice Boltzmann checkpoint");
+    if (std::memcmp(magic, kMagicBefore, sizeof magic) == 0)
+      throw InputError(name, 0, "checkpoint written by an older lbflow (version 1 state, before MPI): run it again from the start");
+    if (std::memcmp(magic, kMagic, sizeof magic) != 0) throw InputError(name, 0, "not a lattice Boltzmann checkpoint");
+    std::uint64_t fp = 0;
+    std::int64_t steps = 0, nodes = 0;
+    std::int32_t width = 0;
+    if (!get(in, &fp, sizeof fp) || !get(in, &steps, sizeof steps) || !get(in, &nodes, sizeof nodes) ||
+        !get(in, &width, sizeof width))
+      throw InputError(name, 0, "truncated checkpoint");
+    if (fp != m.fp)
+      throw InputError(name, 0, "checkpoint is from another run (different lattice or settings)");
+    if (nodes != m.global_fluid || width != (f32 ? 4 : 8) || steps < 0) throw InputError(name, 0, "checkpoint does not match the lattice");
+    const long node_bytes = kQ * static_cast<long>(width);
+    std::vector<char> mine(static_cast<std::size_t>(m.fluid * node_bytes));
+    bool ok = skip_bytes(in, m.first_node * node_bytes) && get(in, mine.data(), mine.size()) &&
+              skip_bytes(in, (m.global_fluid - m.first_node - m.fluid) * node_bytes);
+    std::uint64_t count = 0;
+    if (!ok || !get(in, &count, sizeof count) || count > (1u << 30)) throw InputError(name, 0, "truncated checkpoint");
+    for (std::uint64_t k = 0; k < count; ++k) {
+      double v[kObservableFields];
+      if (!get(in, v, sizeof v)) throw InputError(name, 0, "truncated checkpoint");
+      history.push_back(unpack(v));
+    }
+    const auto unpack_nodes = [&](auto& F) {
+      using Real = std::remove_reference_t<decltype(F[0])>;
+      const Real* v = reinterpret_cast<const Real*>(mine.data());
+      for (long i = 0; i < m.fluid; ++i)
+        for (int q = 0; q < kQ; ++q) F[pop_slot(q, i)] = v[i * kQ + q];
+    };
+    if (f32) unpack_nodes(m.ff);
+    else unpack_nodes(m.fd);
+    m.steps = steps;
+  });
   // An odd step comes next: it gathers from the ghost slots, filled after every even step.
-  if (steps & 1) {
+  if (m.steps & 1) {
     if (f32) m.halo.fill_ghosts(m.ff.data());
     else m.halo.fill_ghosts(m.fd.data());
   }

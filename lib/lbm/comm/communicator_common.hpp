@@ -13,13 +13,17 @@ inline bool launched_by_mpi() {
   return false;
 }
 
-// The number of ranks the launcher started (1 when it does not say, or says no whole number).
+// The number of ranks the launcher started: 1 when no launcher says, or one says no whole
+// number; 0 (unknown: MPI_Comm_size tells) when only a process manager's rank is set (a PMIx
+// launcher that sets PMIX_RANK but no size).
 inline int launched_size() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"})
     if (const char* s = std::getenv(v)) {
       long long n = 0;
       return io::try_parse_integer(s, n) && n >= 1 && n <= 1 << 20 ? static_cast<int>(n) : 1;
     }
+  for (const char* v : {"PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(v)) return 0;
   return 1;
 }
 

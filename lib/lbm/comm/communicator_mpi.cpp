@@ -37,7 +37,7 @@ std::vector<int> displacements(const std::vector<int>& counts) {
 Communicator Communicator::world() {
   Communicator c;
   // One task (lbflow alone, `mpirun -np 1`, or a study's `srun -n1` job step): no MPI at all.
-  if (!comm_detail::launched_by_mpi() || comm_detail::launched_size() <= 1) return c;
+  if (!comm_detail::launched_by_mpi() || comm_detail::launched_size() == 1) return c;
   if (!comm_detail::has_process_manager())
     throw UsageError("srun started " + std::to_string(comm_detail::launched_size()) +
                      " tasks without an MPI plugin, so each would run the whole flow: use srun --mpi=pmix");
