@@ -115,20 +115,20 @@ flow-figure: deps all
 
 # The demo pipeline (scripts/demo/run.sh): every tool chained, then the study at toy size and its
 # report; outputs in $(OUT)/demo/. Builds the programs only, not the tests.
-DEMO_TOOLS := rndmesh shellpack percolate lbflow kcfit jam2d
+# (demo_tools: rndmesh shellpack percolate lbflow kcfit jam2d, CMakeLists.txt)
 run: deps configure
-	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TOOLS)
+	cmake --build $(BUILD) -j $(JOBS) --target demo_tools
 	@scripts/demo/run.sh $(BUILD) $(OUT)/demo
 
 # The thesis's study (Chapters 4-5) as a resumable campaign of files (scripts/study/study.mk):
 # STUDY=default|thesis|demo|tiny picks the sizes, and N, SEEDS, VERTICES, PHI, DELTA, FLOW_DELTA,
 # REFINE, FLOW_N, FLOW_SEEDS override them; RUN prefixes every recipe (srun on Slurm). Writes
 # STUDY_DIR (out/study, out/study-<STUDY>) and its report.html. -j runs tasks in parallel.
-STUDY_TOOLS := rndmesh shellpack percolate lbflow kcfit
+# (study_tools: rndmesh shellpack percolate lbflow kcfit, CMakeLists.txt)
 STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
 .PHONY: study study-report study-docs study-jobs study-tools test-slurm
 study-tools: deps configure
-	cmake --build $(BUILD) -j $(JOBS) --target $(STUDY_TOOLS) >&2
+	cmake --build $(BUILD) -j $(JOBS) --target study_tools >&2
 study: study-tools
 	+@$(STUDY_MAKE) all
 # The report from whatever has finished (tables, fits, figures; the rest says what is missing).
