@@ -112,6 +112,24 @@ case_rank_cannot_allocate() {  # rank 1 alone under a limit its half (650 MB) do
     mpirun -np 2 sh -c '[ "$OMPI_COMM_WORLD_RANK" = 1 ] && ulimit -v 500000; exec "$0" "$@"' "$lbflow" "${big_run[@]}" -o out.csv
 }
 
+case_checkpoint_of_an_older_version() {  # the state format before MPI (version 1), its checksum made good: refused on every rank
+  sphere_array
+  "$lbflow" array.xyz --delta 0.0625 --refine 1 --max-steps 100 --checkpoint run.ckpt -q -o /dev/null 2>/dev/null
+  [ -s run.ckpt ] || fail "no checkpoint"
+  /usr/bin/python3 - run.ckpt <<'PY' || fail "could not rewrite the checkpoint"
+import sys
+path = sys.argv[1]
+data = open(path, "rb").read()
+head_end = data.index(b"state fnv1a64\n") + len(b"state fnv1a64\n")
+state = data[head_end:-26].replace(b"CMPLBM2\n", b"CMPLBM1\n", 1)
+h = 0xcbf29ce484222325
+for b in state:
+    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+open(path, "wb").write(data[:head_end] + state + b"\nfnv1a64 %016x\n" % h)
+PY
+  expect_error 2 "checkpoint written by an older lbflow" mpirun -np 2 "$lbflow" --resume run.ckpt -o out.csv
+}
+
 case_rank_0_cannot_gather_the_field() {  # rank 0 holds its half but not the whole VTK field: it names itself and ends every rank, no hang
   cluster
   timeout 120 mpirun -np 2 sh -c '[ "$OMPI_COMM_WORLD_RANK" = 0 ] && ulimit -v 1100000; exec "$0" "$@"' \
