@@ -343,7 +343,9 @@ void Compression::restore(const CompressionState& s) {
     packing_.periodic = {false, false, false};
     open_ = true;
   }
-  next_target_ = s.next_target;
+  // The next target is found in this run's list (a resume may name other targets; the state's
+  // index counts in the list of the run that saved it).
+  next_target_ = 0;
   phi_jammed_ = s.phi_jammed;
   resolve_relative_targets();
   system_.x = s.x;

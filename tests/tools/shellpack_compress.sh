@@ -140,6 +140,18 @@ case_resume_writes_the_same_bytes() {
   cmp -s whole/run.chk parts/run.chk || fail "final checkpoints differ"
 }
 
+# A resume may name other targets: it goes on to the first one above the saved state (it had
+# done nothing when the new list was shorter than the saved run's index into its own).
+case_resume_with_other_targets() {
+  make_start
+  "$shellpack" compress jammed.xyz --mesh cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 -q --phi 0.44,0.45 \
+    -o 'p_{phi}.off' --checkpoint run.chk --stop-after-steps 1 >first.csv || fail "first part"
+  [ -e p_0.44.off ] && [ ! -e p_0.45.off ] || fail "the first part should stop between the targets"
+  "$shellpack" compress --resume run.chk --phi 0.45 -q >c.csv 2>err.txt || fail "resume: $(cat err.txt)"
+  [ -e p_0.45.off ] || fail "the resumed run did not reach its one target 0.45: $(tail -2 c.csv)"
+  [ "$(grep -v '^#' c.csv | tail -1 | cut -d, -f2)" = 0.45 ] || fail "last row: $(tail -1 c.csv)"
+}
+
 # A resume may add --timings to a run without it, or drop it (--timings=false): the rows the
 # checkpoint holds get an empty `seconds` (their time unknown) or lose theirs; every other cell
 # is the uninterrupted run's. (It used to end in "internal error: CsvWriter::row: 21 cells,
