@@ -30,4 +30,13 @@ class ComputationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How a failure caught as std::exception is told on: bad input (InputError, UsageError: exit 2)
+// or not (exit 1), and its message, "out of memory" for std::bad_alloc. (lbm's agree and
+// lbflow's abort path; cli::run_tool catches each kind itself, to print each its way.)
+struct FailureReport {
+  bool bad_input = false;
+  std::string message;
+};
+FailureReport failure_report(const std::exception& e);
+
 }  // namespace cmp

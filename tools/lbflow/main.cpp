@@ -28,7 +28,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <new>
 #include <iostream>
 #include <set>
 
@@ -214,9 +213,8 @@ int main(int argc, char** argv) {
       // Met by this rank alone (not through agree): the others may be waiting for it in a
       // collective, so it names itself and ends them all rather than hang.
       if (!lbm::Communicator::error_agreed()) {
-        const bool bad_input = dynamic_cast<const UsageError*>(&e) || dynamic_cast<const InputError*>(&e);
-        comm.abort_all(dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what(),
-                       bad_input ? cli::kBadInput : cli::kComputationFailed, error_fd);
+        const FailureReport report = failure_report(e);
+        comm.abort_all(report.message, report.bad_input ? cli::kBadInput : cli::kComputationFailed, error_fd);
       }
       throw;
     }

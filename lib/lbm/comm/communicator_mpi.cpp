@@ -183,14 +183,9 @@ void Communicator::agree(const std::function<void()>& body) const {
   std::exception_ptr error;
   try {
     body();
-  } catch (const UsageError& e) {
-    kind = 1, message = e.what(), error = std::current_exception();
-  } catch (const InputError& e) {
-    kind = 1, message = e.what(), error = std::current_exception();
-  } catch (const std::bad_alloc&) {
-    kind = 2, message = "out of memory", error = std::current_exception();
   } catch (const std::exception& e) {
-    kind = 2, message = e.what(), error = std::current_exception();
+    const FailureReport report = failure_report(e);
+    kind = report.bad_input ? 1 : 2, message = report.message, error = std::current_exception();
   }
   // The lowest failing rank (size_ when none).
   const int first = -max(kind ? -rank_ : -size_);
