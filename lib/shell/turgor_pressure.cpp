@@ -1,12 +1,15 @@
 #include "shell/turgor_pressure.hpp"
 
+#include "shell/element_assembly.hpp"
 #include "shell/shell_partition.hpp"
 
 #include "core/errors.hpp"
+#include "core/fixed_chunks.hpp"
 #include "mesh/manifold.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <omp.h>
 #include <string>
 
 namespace cmp::shell {
@@ -15,40 +18,27 @@ namespace {
 inline double triple(const double* a, const double* b, const double* c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
-// The columns one gradient pass reads and writes.
-struct FaceArrays {
-  const double* x;
-  const int *q0, *q1, *q2, *shell;
-  const double* scale;  // per shell: -Pi/6
-};
-
-// The force pass on one tile (element_assembly.hpp): dV/dx_a = (b x c)/6, cyclic, the same
-// operations in every lane, so the same bits as one face at a time.
-[[gnu::always_inline]] inline void pressure_tile(const double* __restrict P, const double* __restrict S,
-                                                 double* __restrict O, int m) {
-  for (int l = 0; l < m; ++l) {
-    const auto p = [&](int row) { return P[row * kTile + l]; };
-    const double s = S[l];
-    for (int i = 0; i < 3; ++i) {
-      const int b = 3 * ((i + 1) % 3), c = 3 * ((i + 2) % 3);
-      O[(3 * i + 0) * kTile + l] = s * (p(b + 1) * p(c + 2) - p(b + 2) * p(c + 1));
-      O[(3 * i + 1) * kTile + l] = s * (p(b + 2) * p(c + 0) - p(b + 0) * p(c + 2));
-      O[(3 * i + 2) * kTile + l] = s * (p(b + 0) * p(c + 1) - p(b + 1) * p(c + 0));
+// The force on each vertex of [begin, end), added into g: the sum over its faces, in face order,
+// of -Pi/6 (b x c), (a, b, c) the face's corners from this vertex on in cyclic order. The same
+// products and the same order of their sum as a pass over the faces that stores each corner's
+// force in a slot and gathers the slots vertex by vertex (element_assembly.hpp), so the same
+// bits; but a corner force costs six products here, and storing and reloading it cost more:
+// the slot pass took as long as the membrane's (a quarter of a force evaluation of 50 shells
+// of 2562 vertices) though it does a tenth of its arithmetic.
+void pressure_gather(const double* __restrict x, const int* __restrict first, const int* __restrict ring,
+                     const int* __restrict vertex_shell, const double* __restrict scale, long begin, long end,
+                     double* __restrict g) {
+  for (long v = begin; v < end; ++v) {
+    const double s = scale[vertex_shell[v]];
+    double sx = 0, sy = 0, sz = 0;
+    for (int k = first[v]; k < first[v + 1]; ++k) {
+      const double* b = x + 3L * ring[2 * k];
+      const double* c = x + 3L * ring[2 * k + 1];
+      sx += s * (b[1] * c[2] - b[2] * c[1]);
+      sy += s * (b[2] * c[0] - b[0] * c[2]);
+      sz += s * (b[0] * c[1] - b[1] * c[0]);
     }
-  }
-}
-
-[[gnu::target_clones("avx2", "default")]] void pressure_forces(const FaceArrays A, const CornerForces& out, long begin,
-                                                               long end) {
-  const CornerForces F = out;  // a local copy: the stores below cannot change it
-  const int* corners[3] = {A.q0, A.q1, A.q2};
-  alignas(64) double P[9 * kTile], O[9 * kTile], S[kTile];
-  for (long t0 = begin; t0 < end; t0 += kTile) {
-    const int m = static_cast<int>(std::min<long>(kTile, end - t0));
-    load_tile<3>(A.x, corners, t0, m, P);
-    for (int l = 0; l < m; ++l) S[l] = A.scale[A.shell[t0 + l]];
-    pressure_tile(P, S, O, m);
-    store_tile<3>(O, F, t0, m);
+    g[3 * v] += sx, g[3 * v + 1] += sy, g[3 * v + 2] += sz;
   }
 }
 
@@ -85,7 +75,7 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
   turgor_.assign(static_cast<std::size_t>(std::max(shells.shell_count, 1)), p.turgor);
   scale_.assign(turgor_.size(), 0.0);
   target_ = volumes(std::span<const double>(rest.V.data(), rest.V.size()));
-  assembly_ = ElementAssembly(corners_, 3, vertex_count_);
+  build_rings(shells.face_shell);
   for (std::size_t s = 0; s < target_.size(); ++s)
     if (!(target_[s] > 0))
       throw UsageError(style + ": the faces are oriented inward (shell " + std::to_string(s) + ": signed volume " +
@@ -110,13 +100,37 @@ double TurgorPressure::energy(std::span<const double> x) const {
   return e;
 }
 
+void TurgorPressure::build_rings(const std::vector<int>& face_shell) {
+  // Each vertex's faces in face order, as the other two corners in cyclic order.
+  first_.assign(static_cast<std::size_t>(vertex_count_) + 1, 0);
+  for (int v : corners_) ++first_[v + 1];
+  for (long v = 0; v < vertex_count_; ++v) first_[v + 1] += first_[v];
+  ring_.resize(2 * corners_.size());
+  vertex_shell_.assign(static_cast<std::size_t>(vertex_count_), 0);
+  std::vector<int> next(first_.begin(), first_.end() - 1);
+  const std::size_t nf = corners_.size() / 3;
+  for (std::size_t f = 0; f < nf; ++f)
+    for (int i = 0; i < 3; ++i) {
+      const int v = corners_[3 * f + i];
+      const int k = next[v]++;
+      ring_[2 * k] = corners_[3 * f + (i + 1) % 3];
+      ring_[2 * k + 1] = corners_[3 * f + (i + 2) % 3];
+      vertex_shell_[v] = face_shell[f];
+    }
+  vertex_chunks_ = static_cast<int>(std::max(1L, (vertex_count_ + kVertexChunk - 1) / kVertexChunk));
+}
+
 void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   for (std::size_t s = 0; s < turgor_.size(); ++s) scale_[s] = -turgor_[s] / 6.0;
-  const FaceArrays A{x.data(), assembly_.corner(0), assembly_.corner(1), assembly_.corner(2), face_shell_.data(),
-                     scale_.data()};
-  const CornerForces F = assembly_.corner_forces();
-  assembly_.assemble([&](long begin, long end) { pressure_forces(A, F, begin, end); }, g.data());
+  const int chunks = vertex_chunks_;
+  // As the other mesh terms: on all threads from the same face count (element_assembly.hpp).
+  const bool parallel = static_cast<long>(face_shell_.size()) >= ElementAssembly::parallel_elements() &&
+                        omp_get_max_threads() > 1 && !omp_in_parallel();
+  for_each_chunk(chunks, parallel, [&](int c) {
+    pressure_gather(x.data(), first_.data(), ring_.data(), vertex_shell_.data(), scale_.data(),
+                    chunk_begin(vertex_count_, chunks, c), chunk_begin(vertex_count_, chunks, c + 1), g.data());
+  });
 }
 
 void TurgorPressure::set_turgor(double pi) {

@@ -16,9 +16,9 @@
 //     V0_s default to the rest volumes; a driver that inflates first sets them to the
 //     inflated ones. A shell at Pi = 0 stays at 0 under this rule (as in the thesis, which
 //     starts it from the inflated state).
-// The gradient is a loop over the faces on all threads (element_assembly.hpp: the same bits
-// for any thread count); volumes and the energy are summed face by face in order.
-#include "shell/element_assembly.hpp"
+// The gradient is a loop over the vertices, each summing its faces in face order, on all
+// threads (the same bits for any thread count); volumes and the energy are summed face by face
+// in order.
 #include "shell/energy_term.hpp"
 #include "shell/shell_parameters.hpp"
 
@@ -61,12 +61,18 @@ class TurgorPressure final : public EnergyTerm {
   double volume_error(std::span<const double> x) const;
 
  private:
+  void build_rings(const std::vector<int>& face_shell);
+
+  static constexpr long kVertexChunk = 512;
   PressureControl control_;
   long vertex_count_;
   std::vector<int> corners_, face_shell_;
+  // Vertex v's faces are ring_ pairs first_[v] .. first_[v + 1] (the other two corners, in
+  // cyclic order), in face order; its shell is vertex_shell_[v].
+  std::vector<int> first_, ring_, vertex_shell_;
+  int vertex_chunks_ = 1;
   std::vector<double> turgor_, target_;
   mutable std::vector<double> scale_;  // -Pi/6 per shell, for the gradient pass
-  ElementAssembly assembly_;
 };
 
 }  // namespace cmp::shell
