@@ -23,6 +23,7 @@ void FireParameters::validate() const {
   require(f_inc >= 1, "f_inc must be at least 1");
   require(f_dec > 0 && f_dec < 1, "f_dec must lie in (0, 1)");
   require(divergence_factor == 0 || divergence_factor > 1, "divergence_factor must be 0 (off) or above 1");
+  require(dt_max_recovery >= 0, "dt_max_recovery must not be negative");
   require(mass > 0, "mass must be positive");
   require(force_tolerance >= 0, "force tolerance must not be negative");
   require(parallel_size >= 0, "parallel_size must not be negative");
@@ -59,7 +60,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
   forces(x, f);
   result.force_evaluations = 1;
   double dt = p.dt, alpha = p.alpha_start, dt_max = p.dt_max;
-  long last_cut = 0;
+  long last_cut = 0, last_ringing = 0;
   const double inverse_mass = 1.0 / p.mass;
   // The velocity update before each drift, v <- keep v + (mix + dt/2m) f: the FIRE mixing of
   // the last step fused with the first half kick of this one (two passes over the state per
@@ -136,12 +137,15 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
                          result.max_force > p.divergence_factor * force_before;
     if (ringing) {
       ++result.divergence_restarts;
+      last_ringing = it;
       dt_max = std::min(dt_max, 0.5 * dt);
     }
     // FIRE: turn v towards F (applied in the next pass), adapt dt and alpha.
     keep = 1 - alpha;
     mix = ff > 0 ? alpha * std::sqrt(vv / ff) : 0.0;
     if (power > 0 && !ringing) {
+      if (p.dt_max_recovery > 0 && dt_max < p.dt_max && it - last_ringing > p.dt_max_recovery)
+        dt_max = std::min(p.dt_max, dt_max * p.f_inc);
       if (it - last_cut > p.n_min) {
         dt = std::min(dt * p.f_inc, dt_max);
         alpha *= p.f_alpha;

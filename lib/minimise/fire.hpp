@@ -47,6 +47,13 @@ struct FireParameters {
   // system still flows downhill): restart from rest as for P <= 0 and keep dt below half the
   // step that rang for the rest of the run. 0 turns the guard off.
   double divergence_factor = 4.0;
+  // ... and after this many iterations without ringing, the cap grows back by f_inc per step
+  // with P > 0 towards dt_max: near convergence, where max |f_i| is a few vertices, a contact
+  // that closes or a Pi update can multiply it by 4 at a step well below the stability limit,
+  // and a cap kept for good then made a whole rearrangement crawl at an eighth of the step
+  // (50 shells of 2,562 vertices, one box step past 55,000 iterations). Real ringing comes
+  // back within a few steps of the cap's lifting and is cut again. 0 keeps the cap for good.
+  long dt_max_recovery = 100;
 
   // Throws cmp::UsageError naming the first bad field (non-positive steps, f_dec >= 1, ...).
   void validate() const;
