@@ -4,7 +4,7 @@
 # 0.14); delta = 0.03-0.07 D0; the flow at delta = 0.04 for M = 1, 2, 3 on N = 50. The thesis
 # averaged 50 simulations per N (Ch. 4) and does not say how many packings fed each
 # percolation probability: 20 seeds per N here, the flow on the first 5 seeds of N = 50. A
-# compression of 50 x 2,562 shells takes about an hour and a half on 2 cores: hours here,
+# compression of 50 x 2,562 shells takes over an hour on 2 cores (docs/study.md): hours here,
 # minutes per task on a cluster (RUN='srun ...').
 N          ?= 16 32 50
 SEEDS      ?= 1:20
