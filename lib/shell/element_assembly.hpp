@@ -119,9 +119,14 @@ class ElementAssembly {
   // benchmarks; it is not thread-safe against running assemblies.
   static long parallel_elements();
   static void set_parallel_elements(long count);
+  // Whether a pass over this many elements runs on all threads (the rule above, and never
+  // inside another parallel region).
+  static bool runs_parallel(long elements) {
+    return elements >= parallel_elements() && omp_get_max_threads() > 1 && !omp_in_parallel();
+  }
 
  private:
-  bool parallel() const { return elements_ >= parallel_elements() && omp_get_max_threads() > 1 && !omp_in_parallel(); }
+  bool parallel() const { return runs_parallel(elements_); }
   // Adds the sums of vertices [begin, end) into g.
   void gather(long begin, long end, double* g) const;
 

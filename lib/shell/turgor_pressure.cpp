@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <omp.h>
 #include <string>
 
 namespace cmp::shell {
@@ -125,8 +124,7 @@ void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g
   for (std::size_t s = 0; s < turgor_.size(); ++s) scale_[s] = -turgor_[s] / 6.0;
   const int chunks = vertex_chunks_;
   // As the other mesh terms: on all threads from the same face count (element_assembly.hpp).
-  const bool parallel = static_cast<long>(face_shell_.size()) >= ElementAssembly::parallel_elements() &&
-                        omp_get_max_threads() > 1 && !omp_in_parallel();
+  const bool parallel = ElementAssembly::runs_parallel(static_cast<long>(face_shell_.size()));
   for_each_chunk(chunks, parallel, [&](int c) {
     pressure_gather(x.data(), first_.data(), ring_.data(), vertex_shell_.data(), scale_.data(),
                     chunk_begin(vertex_count_, chunks, c), chunk_begin(vertex_count_, chunks, c + 1), g.data());
