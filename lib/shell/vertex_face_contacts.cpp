@@ -199,6 +199,19 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
     candidates_.insert(candidates_.end(), kept[c].begin(), kept[c].end());
     candidate_images_.insert(candidate_images_.end(), kept_images[c].begin(), kept_images[c].end());
   }
+  // The gather's index: per vertex, the candidates of other vertices whose triangle has it as a
+  // corner, in ascending candidate order (the order of a serial pass over the records).
+  const long total = static_cast<long>(candidates_.size());
+  corner_use_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (long s = 0; s < total; ++s)
+    for (int k = 0; k < 3; ++k) ++corner_use_start_[faces_[3 * candidates_[s] + k] + 1];
+  for (Eigen::Index v = 0; v < n; ++v) corner_use_start_[v + 1] += corner_use_start_[v];
+  corner_uses_.resize(3 * static_cast<std::size_t>(total));
+  next.assign(corner_use_start_.begin(), corner_use_start_.end() - 1);
+  for (int c = 0; c < chunks; ++c)
+    for (long s = candidate_start_[chunk_begin(n, chunks, c)]; s < candidate_start_[chunk_begin(n, chunks, c + 1)]; ++s)
+      for (int k = 0; k < 3; ++k) corner_uses_[next[faces_[3 * candidates_[s] + k]]++] = {static_cast<int>(s), c, k};
+  record_of_.assign(static_cast<std::size_t>(total), -1);
   reference_.assign(x.begin(), x.end());
   // A triangle at least delta + skin from x_i stays beyond delta while x_i and its corners each
   // move less than skin / 2 (the point of the moved triangle with the old closest weights
@@ -236,7 +249,11 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
         Eigen::Vector3d w;
         const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, candidate_images_[s], kStraddles, w);
         const double d2 = q.squaredNorm();
-        if (!(d2 < delta2)) continue;
+        if (!(d2 < delta2)) {
+          record_of_[s] = -1;
+          continue;
+        }
+        record_of_[s] = static_cast<int>(out.size());
         out.push_back({static_cast<int>(i), f, {w[0], w[1], w[2]}, {-q[0], -q[1], -q[2]}, std::sqrt(d2)});
       }
     }
@@ -285,43 +302,45 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
     return;
   }
   // A record adds -U'(h) d/r to its vertex and takes w_k of that from each corner of its
-  // triangle, which may lie in any chunk. Pass 1, per chunk of records: the factor of each
-  // record and, per target chunk, the records that write there, in record order. Pass 2, per
-  // target chunk: the records that write there, source chunk by source chunk. Every entry of g
-  // gets its terms in the one order of a serial pass over all records: the same bits on any
-  // thread count, and no two threads write one entry.
-  const auto chunk_of = [&](int v) {
-    int c = static_cast<int>(static_cast<long>(v) * chunks / std::max<Eigen::Index>(n, 1));
-    while (c + 1 < chunks && chunk_begin(n, chunks, c + 1) <= v) ++c;
-    while (c > 0 && chunk_begin(n, chunks, c) > v) --c;
-    return c;
-  };
+  // triangle, which may lie in any chunk. Pass 1, per chunk of records: each record's factor.
+  // Pass 2, per chunk of vertices: each vertex walks its own candidates and those whose
+  // triangle it is a corner of (the list's index), both in candidate order, and adds the terms
+  // of the ones in contact. Every entry of g gets its terms in the order of a serial pass over
+  // the records (records follow their candidates): the same bits on any thread count, and no
+  // two threads write one entry.
   factors_.resize(static_cast<std::size_t>(chunks));
-  writers_.resize(static_cast<std::size_t>(chunks));
   for_each_chunk(chunks, true, [&](int c) {
     const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
     std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
-    std::vector<std::vector<int>>& to = writers_[static_cast<std::size_t>(c)];
     factor.resize(in.size());
-    to.resize(static_cast<std::size_t>(chunks));
-    for (auto& list : to) list.clear();
-    for (std::size_t k = 0; k < in.size(); ++k) {
-      const Record& r = in[k];
-      factor[k] = factor_of(r);
-      if (factor[k] == 0) continue;
-      const int* corner = faces_.data() + 3 * r.face;
-      int seen[4] = {chunk_of(r.i), chunk_of(corner[0]), chunk_of(corner[1]), chunk_of(corner[2])};
-      for (int a = 0; a < 4; ++a)
-        if (std::find(seen, seen + a, seen[a]) == seen + a) to[static_cast<std::size_t>(seen[a])].push_back(static_cast<int>(k));
-    }
+    for (std::size_t k = 0; k < in.size(); ++k) factor[k] = factor_of(in[k]);
   });
   for_each_chunk(chunks, true, [&](int t) {
-    const Eigen::Index lo = chunk_begin(n, chunks, t), hi = chunk_begin(n, chunks, t + 1);
-    for (int c = 0; c < chunks; ++c) {
-      const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
-      const std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
-      for (int k : writers_[static_cast<std::size_t>(c)][static_cast<std::size_t>(t)])
-        add_terms(in[static_cast<std::size_t>(k)], factor[static_cast<std::size_t>(k)], lo, hi);
+    const std::vector<Record>& own = records_[static_cast<std::size_t>(t)];
+    const std::vector<double>& own_factor = factors_[static_cast<std::size_t>(t)];
+    for (Eigen::Index v = chunk_begin(n, chunks, t), end = chunk_begin(n, chunks, t + 1); v < end; ++v) {
+      double* gv = G + 3 * v;
+      int s = candidate_start_[v];
+      const int s_end = candidate_start_[v + 1];
+      const CornerUse* u = corner_uses_.data() + corner_use_start_[v];
+      const CornerUse* u_end = corner_uses_.data() + corner_use_start_[v + 1];
+      while (s < s_end || u < u_end) {
+        if (u == u_end || (s < s_end && s < u->candidate)) {
+          // v pushed by a triangle of another shell: +s d.
+          if (const int k = record_of_[s]; k >= 0)
+            if (const double f = own_factor[k]; f != 0)
+              for (int a = 0; a < 3; ++a) gv[a] += f * own[k].d[a];
+          ++s;
+        } else {
+          // v a corner of the triangle pushing another vertex: -w s d.
+          if (const int k = record_of_[u->candidate]; k >= 0) {
+            const Record& r = records_[u->chunk][k];
+            if (const double f = factors_[u->chunk][k]; f != 0)
+              for (int a = 0; a < 3; ++a) gv[a] -= r.w[u->corner] * (f * r.d[a]);
+          }
+          ++u;
+        }
+      }
     }
   });
 }

@@ -125,10 +125,19 @@ class VertexFaceContacts final : public ShellContactTerm {
   mutable std::vector<int> pairs_;     // vertex pairs (i, j): j's triangles are i's candidates
   mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
   mutable std::vector<std::vector<Record>> records_;
-  // add_gradient's scatter, per chunk of records: each record's factor -U'(h)/r, and per target
-  // chunk the records (ascending) that write to it.
-  mutable std::vector<std::vector<double>> factors_;
-  mutable std::vector<std::vector<std::vector<int>>> writers_;
+  // Per candidate: the index of its record in its vertex's chunk of records_, or -1 (out of
+  // contact at the last collect()).
+  mutable std::vector<int> record_of_;
+  // Per vertex, the candidates whose triangle has it as a corner (CSR, ascending candidate):
+  // add_gradient's gather, built with the list.
+  struct CornerUse {
+    int candidate;
+    int chunk;   // the chunk of records_ holding the candidate's record
+    int corner;  // 0, 1, 2: which corner of the triangle the vertex is
+  };
+  mutable std::vector<int> corner_use_start_;
+  mutable std::vector<CornerUse> corner_uses_;
+  mutable std::vector<std::vector<double>> factors_;  // per chunk of records: -U'(h)/r of each
 };
 
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
