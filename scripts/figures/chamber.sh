@@ -32,15 +32,21 @@ runs=(
   "nofb_mu2e3|--mobility 2e3 --time $T"
 )
 for a in 1.2 2 3; do runs+=("outlet_$a|--mobility 8e4 --time $TS --outlet $a"); done
+# The avalanche size against the outlet scatters from seed to seed: seeds 2..OUTLET_SEEDS as well.
+OUTLET_SEEDS=${OUTLET_SEEDS:-3}
+for seed in $(seq 2 "$OUTLET_SEEDS"); do
+  for a in 1.2 1.4 2 3; do runs+=("outlet_${a}_s$seed|--mobility 8e4 --time $TS --outlet $a --seed $seed"); done
+done
 for a in 1.2 1.4 2 3; do runs+=("sticky_$a|--mobility 8e4 --time $TS --outlet $a --contact sticky --attraction 0.05"); done
 # One run and its avalanches: NAME OPTIONS... (Euler unless the options name an integrator).
 run_one() {
   local name=$1
   shift
-  local integrator=(--integrator euler)
+  local integrator=(--integrator euler) seed=(--seed 1)
   case " $* " in *" --integrator "*) integrator=() ;; esac
-  echo "== jam2d chamber --seed 1 $*" >&2
-  "$jam2d" chamber --seed 1 --every 0.01 "${integrator[@]}" "$@" -q --csv "$out/chamber_$name.csv"
+  case " $* " in *" --seed "*) seed=() ;; esac
+  echo "== jam2d chamber ${seed[*]} $*" >&2
+  "$jam2d" chamber "${seed[@]}" --every 0.01 "${integrator[@]}" "$@" -q --csv "$out/chamber_$name.csv"
   "$jam2d" avalanches "$out/chamber_$name.csv" --distribution "$out/chamber_${name}_drops_dist.csv" \
     -o "$out/chamber_${name}_drops.csv"
 }
@@ -49,9 +55,10 @@ export jam2d out
 if [ "${REUSE:-0}" != 1 ]; then
   printf '%s\n' "${runs[@]}" | tr '|' ' ' | parallel -j 2 --halt now,fail=1 run_one {=uq=}
 fi
-/usr/bin/python3 - "$out" <<'PY'
+/usr/bin/python3 - "$out" "$OUTLET_SEEDS" <<'PY'
 import csv, math, sys
 out = sys.argv[1]
+outlet_seeds = int(sys.argv[2])
 def meta(path):
     m = {}
     for line in open(path):
@@ -74,6 +81,16 @@ S = {name: summary(name) for name in ["nofb", "fb", "gear3", "nofb_mu2e4", "nofb
                                       "fb_P0_0.02", "fb_P0_0.005", "nofb_mu2e3"]
      + [f"outlet_{a}" for a in ("1.2", "2", "3")] + [f"sticky_{a}" for a in ("1.2", "1.4", "2", "3")]}
 S["outlet_1.4"] = S["nofb"]
+# The avalanche size per outlet over seeds 1..outlet_seeds (seed 1 at a = 1.4 is the main run,
+# TIME long; every other run SWEEP_TIME): the mean of the per-seed means and its standard error.
+def seeds_of(a):
+    return [S[f"outlet_{a}"]] + [summary(f"outlet_{a}_s{k}") for k in range(2, outlet_seeds + 1)]
+def mean_err(values):
+    m = sum(values) / len(values)
+    if len(values) < 2: return m, float("nan")
+    return m, math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1) / len(values))
+size_over_seeds = {a: mean_err([r["size"] for r in seeds_of(a)]) for a in ("1.2", "1.4", "2", "3")}
+P_over_seeds = {a: mean_err([r["P"] for r in seeds_of(a)]) for a in ("1.2", "1.4", "2", "3")}
 n = S["nofb"]
 ks_crit = 1.36 / math.sqrt(max(1, n["tail"]))
 lines = [
@@ -88,7 +105,9 @@ lines = [
     f"| ⟨P⟩ at μ = 2×10³: P0 = ∞ / 0.07 / 0.02 / 0.005 k | {S['nofb_mu2e3']['P']:.3f} / {S['fb']['P']:.3f} / {S['fb_P0_0.02']['P']:.3f} / {S['fb_P0_0.005']['P']:.3f} k | rises as P0 falls (Fig. S2.11) |",
     f"| c_P at μ = 2×10³: P0 = ∞ / 0.07 / 0.02 / 0.005 k | {S['nofb_mu2e3']['cP']:.2f} / {S['fb']['cP']:.2f} / {S['fb_P0_0.02']['cP']:.2f} / {S['fb_P0_0.005']['cP']:.2f} | falls by about 40 % (Fig. S2.11) |",
     "| ⟨P⟩ against the outlet a = 1.2 / 1.4 / 2 / 3 σ, no attraction | " + " / ".join(f"{S['outlet_'+a]['P']:.3f}" for a in ("1.2", "1.4", "2", "3")) + " k | falls with a (Fig. S2.13) |",
-    "| mean avalanche (cells) against a, no attraction | " + " / ".join(f"{S['outlet_'+a]['size']:.1f}" for a in ("1.2", "1.4", "2", "3")) + " | grows with a (Fig. S2.13) |",
+    "| mean avalanche (cells) against a, no attraction, seed 1 | " + " / ".join(f"{S['outlet_'+a]['size']:.1f}" for a in ("1.2", "1.4", "2", "3")) + " | grows with a (Fig. S2.13) |",
+    f"| the same, mean ± standard error over seeds 1-{outlet_seeds} | " + " / ".join(f"{size_over_seeds[a][0]:.1f} ± {size_over_seeds[a][1]:.1f}" for a in ("1.2", "1.4", "2", "3")) + " | grows with a (Fig. S2.13) |",
+    f"| ⟨P⟩ against a, the same seeds | " + " / ".join(f"{P_over_seeds[a][0]:.3f} ± {P_over_seeds[a][1]:.3f}" for a in ("1.2", "1.4", "2", "3")) + " k | falls with a (Fig. S2.13) |",
     "| ⟨P⟩ against a with attraction Δ = 0.05 σ | " + " / ".join(f"{S['sticky_'+a]['P']:.3f}" for a in ("1.2", "1.4", "2", "3")) + " k | above the non-sticky pressure (Fig. 2.4c) |",
 ]
 # The thesis's viscous-friction estimate (S2.15-S2.20): P = 3 pi k eta N_o N_c for the cells in the
@@ -101,9 +120,10 @@ lines.append(f"| viscous friction in the outlet, 3πkηN_oN_c (S2.17) | {P_round
              "10⁹ times below the measured 0.7 MPa, so friction cannot explain the pressure | \"1 × 10⁻³ Pa\", negligible |")
 open(f"{out}/chamber_summary.md", "w").write("\n".join(lines) + "\n")
 with open(f"{out}/chamber_outlets.dat", "w") as g:
-    g.write("# outlet P_plain size_plain P_sticky size_sticky\n")
+    g.write("# outlet P_plain size_plain P_sticky size_sticky size_plain_seeds size_plain_seeds_error\n")
     for a in ("1.2", "1.4", "2", "3"):
-        g.write(f"{a} {S['outlet_'+a]['P']} {S['outlet_'+a]['size']} {S['sticky_'+a]['P']} {S['sticky_'+a]['size']}\n")
+        g.write(f"{a} {S['outlet_'+a]['P']} {S['outlet_'+a]['size']} {S['sticky_'+a]['P']} {S['sticky_'+a]['size']} "
+                f"{size_over_seeds[a][0]} {size_over_seeds[a][1]}\n")
 with open(f"{out}/chamber_rates.dat", "w") as g:
     g.write("# mobility ratio_nofb ratio_fb\n")
     for mu, a, b in ((5e2, None, "fb_mu5e2"), (2e3, "nofb_mu2e3", "fb"), (2e4, "nofb_mu2e4", None),

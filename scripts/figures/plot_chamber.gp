@@ -50,5 +50,5 @@ set ytics nomirror
 set key right top
 plot dir."/chamber_outlets.dat" using 1:2 with linespoints pt 7 lw 2 lc rgb "#0077bb" title "<P>, repulsive", \
      "" using 1:4 with linespoints pt 5 lw 2 lc rgb "#cc3311" title "<P>, sticky {/Symbol D} = 0.05 {/Symbol s}", \
-     "" using 1:3 axes x1y2 with linespoints pt 6 dt 2 lw 2 lc rgb "#0077bb" title "avalanche, repulsive", \
+     "" using 1:6:7 axes x1y2 with yerrorlines pt 6 dt 2 lw 2 lc rgb "#0077bb" title "avalanche, repulsive (mean of seeds, standard error)", \
      "" using 1:5 axes x1y2 with linespoints pt 4 dt 2 lw 2 lc rgb "#cc3311" title "avalanche, sticky"
