@@ -199,19 +199,23 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
     candidates_.insert(candidates_.end(), kept[c].begin(), kept[c].end());
     candidate_images_.insert(candidate_images_.end(), kept_images[c].begin(), kept_images[c].end());
   }
-  // The gather's index: per vertex, the candidates of other vertices whose triangle has it as a
-  // corner, in ascending candidate order (the order of a serial pass over the records).
+  // The gather's index (add_gradient on all threads only): per vertex, the candidates of other
+  // vertices whose triangle has it as a corner, in ascending candidate order (the order of a
+  // serial pass over the records).
   const long total = static_cast<long>(candidates_.size());
-  corner_use_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (long s = 0; s < total; ++s)
-    for (int k = 0; k < 3; ++k) ++corner_use_start_[faces_[3 * candidates_[s] + k] + 1];
-  for (Eigen::Index v = 0; v < n; ++v) corner_use_start_[v + 1] += corner_use_start_[v];
-  corner_uses_.resize(3 * static_cast<std::size_t>(total));
-  next.assign(corner_use_start_.begin(), corner_use_start_.end() - 1);
-  for (int c = 0; c < chunks; ++c)
-    for (long s = candidate_start_[chunk_begin(n, chunks, c)]; s < candidate_start_[chunk_begin(n, chunks, c + 1)]; ++s)
-      for (int k = 0; k < 3; ++k) corner_uses_[next[faces_[3 * candidates_[s] + k]]++] = {static_cast<int>(s), c, k};
   record_of_.assign(static_cast<std::size_t>(total), -1);
+  gather_index_ = parallel();
+  if (gather_index_) {
+    corner_use_start_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (long s = 0; s < total; ++s)
+      for (int k = 0; k < 3; ++k) ++corner_use_start_[faces_[3 * candidates_[s] + k] + 1];
+    for (Eigen::Index v = 0; v < n; ++v) corner_use_start_[v + 1] += corner_use_start_[v];
+    corner_uses_.resize(3 * static_cast<std::size_t>(total));
+    next.assign(corner_use_start_.begin(), corner_use_start_.end() - 1);
+    for (int c = 0; c < chunks; ++c)
+      for (long s = candidate_start_[chunk_begin(n, chunks, c)]; s < candidate_start_[chunk_begin(n, chunks, c + 1)]; ++s)
+        for (int k = 0; k < 3; ++k) corner_uses_[next[faces_[3 * candidates_[s] + k]]++] = {static_cast<int>(s), c, k};
+  }
   reference_.assign(x.begin(), x.end());
   // A triangle at least delta + skin from x_i stays beyond delta while x_i and its corners each
   // move less than skin / 2 (the point of the moved triangle with the old closest weights
@@ -280,25 +284,22 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   double* G = g.data();
   // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
   const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(hertz_prefactor(estar_, rstar_), delta_ - r.r) / r.r : 0.0; };
-  // Record r with factor s: s d on its vertex, -w_k s d on each corner of its triangle; only
-  // the entries of vertices in [lo, hi).
-  const auto add_terms = [&](const Record& r, double s, Eigen::Index lo, Eigen::Index hi) {
-    const int* corner = faces_.data() + 3 * r.face;
-    const bool mine = r.i >= lo && r.i < hi;
-    for (int a = 0; a < 3; ++a) {
-      const double gp = s * r.d[a];
-      if (mine) G[3 * r.i + a] += gp;
-      for (int m = 0; m < 3; ++m)
-        if (corner[m] >= lo && corner[m] < hi) G[3 * corner[m] + a] -= r.w[m] * gp;
-    }
-  };
-  if (!parallel() || omp_get_max_threads() == 1) {
-    // One thread: the records in order, straight into g. The two passes below cost more than
-    // the scatter itself there (16 x 642 shells with faces to phi = 0.9, whose passes stay on
-    // one thread: 118-120 s with them, 94-106 s without; the same packing).
+  if (!gather_index_ || omp_get_max_threads() == 1) {
+    // One thread (or a list built for one): the records in order, straight into g (s d on the vertex, -w_k s d on each
+    // corner of the triangle). The two passes below cost more than the scatter itself there
+    // (16 x 642 shells with faces to phi = 0.9, whose passes stay on one thread: 118-120 s with
+    // the earlier two-pass scatter, 94-106 s without; the same packing).
     for (const std::vector<Record>& in : records_)
-      for (const Record& r : in)
-        if (const double s = factor_of(r); s != 0) add_terms(r, s, 0, n);
+      for (const Record& r : in) {
+        const double s = factor_of(r);
+        if (s == 0) continue;
+        const int* corner = faces_.data() + 3 * r.face;
+        for (int a = 0; a < 3; ++a) {
+          const double gp = s * r.d[a];
+          G[3 * r.i + a] += gp;
+          for (int m = 0; m < 3; ++m) G[3 * corner[m] + a] -= r.w[m] * gp;
+        }
+      }
     return;
   }
   // A record adds -U'(h) d/r to its vertex and takes w_k of that from each corner of its

@@ -135,6 +135,7 @@ class VertexFaceContacts final : public ShellContactTerm {
     int chunk;   // the chunk of records_ holding the candidate's record
     int corner;  // 0, 1, 2: which corner of the triangle the vertex is
   };
+  mutable bool gather_index_ = false;  // the index below was built with the list (parallel())
   mutable std::vector<int> corner_use_start_;
   mutable std::vector<CornerUse> corner_uses_;
   mutable std::vector<std::vector<double>> factors_;  // per chunk of records: -U'(h)/r of each
