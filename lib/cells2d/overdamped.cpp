@@ -100,6 +100,9 @@ const std::vector<IntegratorStyle>& integrator_styles() {
        [] { return std::unique_ptr<OverdampedIntegrator>(new Gear<4>); }, 0.301},
       {"euler", "explicit Euler step y += dt v(y): first order, one evaluation per step",
        [] { return std::unique_ptr<OverdampedIntegrator>(new Euler); }, 2.0},
+      {"rkc", "damped Runge-Kutta-Chebyshev step, 16 evaluations per step stable over a 160 times longer interval than "
+              "Euler's: first order, ten times fewer evaluations for stiff contacts (long runs)",
+       make_chebyshev_integrator, chebyshev_stability_limit()},
   };
   return table;
 }

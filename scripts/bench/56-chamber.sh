@@ -2,8 +2,8 @@
 # make bench, jam2d chamber (thesis Ch. 2): simulated generation times (ln 2 / gamma0) per
 # wall-clock second in the thesis's 6 x 16 sigma chamber at its steady state (about 100 cells),
 # without feedback (mu = 8e4) and with (P0 = 0.07 k, mu = 2e3), with the Gear integrator (the
-# default) and Euler, on 1 and 2 threads (the run is serial: the row shows that the second
-# thread neither helps nor hurts) and with another process busy on one core. Each case resumes
+# default), Euler and the Runge-Kutta-Chebyshev step (rkc), on 1 and 2 threads (the run is
+# serial: the row shows that the second thread neither helps nor hurts) and with another process busy on one core. Each case resumes
 # one checkpoint taken at t = 6/gamma0, after the chamber has filled. Target: 500 generation
 # times (a Fig. 2.2 series) in under 5 minutes. Sourced by scripts/bench/run.sh ($build, $out).
 echo "== jam2d chamber: generation times per second at the steady state" >&2
@@ -13,8 +13,10 @@ jam2d="$build/bin/jam2d"
 configs=(
   "nofb_gear3|--mobility 8e4 --integrator gear3|0.3"
   "nofb_euler|--mobility 8e4 --integrator euler|1"
+  "nofb_rkc|--mobility 8e4 --integrator rkc|5"
   "fb_gear3|--mobility 2e3 --P0 0.07 --integrator gear3|10"
   "fb_euler|--mobility 2e3 --P0 0.07 --integrator euler|30"
+  "fb_rkc|--mobility 2e3 --P0 0.07 --integrator rkc|60"
 )
 {
   bench_header
