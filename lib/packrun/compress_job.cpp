@@ -435,6 +435,7 @@ class CompressRun {
     csv.meta("P0", io::format_number(o_.turgor0));
     csv.meta("box_step", io::format_number(o_.step));
     csv.meta("relative_force_tolerance", io::format_number(o_.relax.relative_tolerance));
+    if (o_.between_tolerance > 0) csv.meta("between_force_tolerance", io::format_number(o_.between_tolerance));
     csv.meta("volume_rule", shell::volume_rule_name(o_.relax.volume_rule));
     csv.meta("seed", std::to_string(job_.seed));
     csv.meta("shells", std::to_string(n_shells_));

@@ -33,6 +33,8 @@ Compression::Compression(ShellPacking packing, CompressionOptions options)
     : packing_(std::move(packing)), options_(std::move(options)), system_(build(packing_, options_)), box_(packing_.box) {
   if (!system_.pressure() || !system_.contacts()) throw UsageError("compress: needs a pressure model and contacts");
   if (!(options_.step > 0)) throw UsageError("compress: the box step must be positive");
+  if (options_.between_tolerance != 0 && !(options_.between_tolerance >= options_.relax.relative_tolerance))
+    throw UsageError("compress: the tolerance between targets must be 0 (off) or at least the targets' tolerance");
   if (options_.walls && !(options_.phi_start > 0 && options_.phi_start < 1))
     throw UsageError("compress: the starting volume fraction of the walled box must lie in (0, 1)");
   relax_ = options_.relax;
@@ -230,8 +232,10 @@ CompressionRow Compression::advance(const RelaxProgress& progress) {
     set_box(box_ * s);
   }
   RelaxResult r;
+  RelaxParameters step_relax = relax_;
+  if (!lands && options_.between_tolerance > 0) step_relax.relative_tolerance = options_.between_tolerance;
   try {
-    r = relax(system_, relax_, progress);
+    r = relax(system_, step_relax, progress);
   } catch (const ComputationError& e) {
     throw ComputationError("step " + std::to_string(step_ + 1) + " (phi " + std::to_string(phi()) + "): " + e.what());
   }

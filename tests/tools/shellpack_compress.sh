@@ -23,7 +23,7 @@ bad_start() { expect_error 2 "$3" "$shellpack" compress "$1" --mesh "$2" --phi 0
 case_help() {
   "$shellpack" compress --help >help.txt || fail "--help"
   for opt in --mesh --phi -o --csv --step --P0 -E --nu -t --model --bending --pressure-model --contact --contact-distance --vertex-radius --ftol \
-    --fire-max-iterations --volume-rule --checkpoint --checkpoint-every --resume --timings --seed --threads; do
+    --ftol-between --fire-max-iterations --volume-rule --checkpoint --checkpoint-every --resume --timings --seed --threads; do
     grep -q -- "$opt" help.txt || fail "--help lacks $opt"
   done
 }
@@ -215,6 +215,27 @@ case_bad_mesh_inward() {
   awk '/^3 / { print $1, $2, $4, $3; next } { print }' cell.off >inward.off
   bad_start jammed.xyz inward.off "inward.off: the faces of shell 0 are oriented inward"
 }
+case_ftol_between_targets() {
+  # --ftol-between: the box steps between targets stop at the looser tolerance, the targets at
+  # --ftol; the table says so and the run takes fewer FIRE iterations than one at --ftol
+  # throughout.
+  make_start
+  compress --phi 0.55,0.7 --ftol 1e-6 >tight.csv || fail "compress --ftol 1e-6"
+  compress --phi 0.55,0.7 --ftol 1e-6 --ftol-between 1e-3 >loose.csv || fail "compress --ftol-between"
+  grep -qx "# between_force_tolerance=0.001" loose.csv || fail "no between_force_tolerance line"
+  ! grep -q between_force_tolerance tight.csv || fail "between_force_tolerance without the option"
+  [ "$(col loose.csv stop | sort -u)" = converged ] || fail "not converged: $(col loose.csv stop)"
+  # Residual (column 18) at most 1e-6 on the target rows, and above it on some row between.
+  awk -F, '/^#/ || $1 == "step" { next } { t = ($2 == "0.55" || $2 == "0.7") }
+    t && $18 > 1e-6 { bad = 1 } !t && $18 > 1e-3 { bad = 1 } !t && $18 > 1e-6 { loose = 1 }
+    END { exit bad || !loose }' loose.csv || fail "residuals: $(col loose.csv residual | tr '\n' ' ')"
+  a=$(col tight.csv iterations | awk '{ s += $1 } END { print s }')
+  b=$(col loose.csv iterations | awk '{ s += $1 } END { print s }')
+  echo "FIRE iterations: --ftol throughout $a, --ftol-between 1e-3 $b"
+  [ "$b" -lt "$a" ] || fail "--ftol-between took $b iterations, --ftol alone $a"
+  expect_error 2 "--ftol-between: must be 0 (off) or at least --ftol" compress --phi 0.6 --ftol-between 1e-5
+}
+
 case_bad_targets() {
   make_start
   expect_error 2 "--phi: target 1.2 must lie in" compress --phi 0.5,1.2 -o 'out_{phi}.off'

@@ -38,6 +38,8 @@ void CompressCommand::check(cli::Tool& tool) {
   auto& m = job.run.model;
   tool.check(!job.packing_path.empty(), "packing", "is required (a jammed sphere packing, or --resume)");
   tool.check(!job.mesh_path.empty(), "--mesh", "is required");
+  tool.check(job.run.between_tolerance == 0 || job.run.between_tolerance >= job.run.relax.relative_tolerance,
+             "--ftol-between", "must be 0 (off) or at least --ftol");
   tool.check(!phi.empty() || !dphi.empty(), "--phi", "is required (or --dphi)");
   tool.check(phi.empty() || dphi.empty(), "--dphi", "cannot be combined with --phi");
   if (!phi.empty()) tool.collect("--phi", [&] { job.run.targets = packrun::parse_phi_targets(phi); });
@@ -136,6 +138,9 @@ CLI::App* CompressCommand::add(cli::Tool& tool, CLI::App& parent, cli::CommonOpt
                   cli::non_negative());
   tool.add_double(*cp, "--ftol", job.run.relax.relative_tolerance,
                   "FIRE stops when max_i |f_i| <= this * E t a (a: mean rest edge length)", cli::positive());
+  tool.add_double(*cp, "--ftol-between", job.run.between_tolerance,
+                  "FIRE tolerance of the box steps between targets, at least --ftol (0: --ftol); the targets keep "
+                  "--ftol", cli::non_negative());
   tool.add_long(*cp, "--fire-max-iterations", job.run.relax.fire.max_iterations,
                 "FIRE iteration cap per relaxation (exit 1 when reached)", cli::at_least(1));
   volume_rule.add(*cp);
