@@ -1,28 +1,32 @@
 #!/usr/bin/env bash
 # make chamber-figures: Chapter 2's chamber (jam2d chamber, then jam2d avalanches), beside the
 # thesis's numbers, at sizes that run in minutes on 2 cores:
-#   - no feedback (mu = 8e4, the thesis's Fig. 2.2b): the pressure series, <P> (thesis 0.19 k),
-#     the drops' survival function and its exponential tail (Fig. 2.2e);
+#   - no feedback (mu = 8e4, the thesis's Fig. 2.2b): the pressure series over 500 generation
+#     times, <P> (thesis 0.19 k), the drops' survival function and its exponential tail (Fig. 2.2e);
 #   - feedback (P0 = 0.07 k, mu = 2e3, Fig. 2.2c), and P0 down to 0.005 k: <P> and c_P (Fig. S2.11);
 #   - the ratio of mean drop rate to mean rise rate against mu, with and without feedback (Fig. S2.10);
 #   - outlet widths 1.2-3 sigma without and with attraction (Delta = 0.05 sigma): the steady
 #     pressure and the avalanche size (Figs. 2.4c and S2.13);
-#   - the no-feedback run once more with the thesis's Gear integrator (the others use Euler,
-#     which the tests show converges to the same trajectory; it is 3.7 times cheaper per time).
-# TIME (default 60/gamma0) is the length of the main runs, SWEEP_TIME (20) of the sweeps.
+#   - the no-feedback run once more with the thesis's Gear integrator and with Euler (the others
+#     use the Runge-Kutta-Chebyshev step, ten times cheaper per simulated time than Euler and 60
+#     times cheaper than Gear; the tests show all three converge to one trajectory, and these two
+#     rows show the statistics agree).
+# TIME (default 347/gamma0 = 500 generation times) is the length of the main runs, SWEEP_TIME
+# (60) of the sweeps, CHECK_TIME (20) of the Gear and Euler runs.
 # Writes $out/chamber_*.csv, $out/chamber_summary.md (the table of docs/jam2d.md) and the PNGs.
 # REUSE=1 redraws from the CSV files of an earlier run.
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/figures}
-T=${TIME:-60} TS=${SWEEP_TIME:-20}
+T=${TIME:-347} TS=${SWEEP_TIME:-60} TC=${CHECK_TIME:-20}
 mkdir -p "$out"
 jam2d="$build/bin/jam2d"
 # name|options: one run each, two at a time.
 runs=(
   "nofb|--mobility 8e4 --time $T"
   "fb|--mobility 2e3 --P0 0.07 --time $T"
-  "gear3|--mobility 8e4 --time $TS --integrator gear3"
+  "gear3|--mobility 8e4 --time $TC --integrator gear3"
+  "euler|--mobility 8e4 --time $TC --integrator euler"
   "nofb_mu2e4|--mobility 2e4 --time $TS"
   "nofb_mu3.2e5|--mobility 3.2e5 --time $TS"
   "fb_mu5e2|--mobility 5e2 --P0 0.07 --time $T"
@@ -31,6 +35,8 @@ runs=(
   "fb_P0_0.005|--mobility 2e3 --P0 0.005 --time $T"
   "nofb_mu2e3|--mobility 2e3 --time $T"
 )
+# Fig. S2.11's feedback sweep once more at the no-feedback fit's mobility.
+for p0 in 0.1 0.07 0.02; do runs+=("fb_mu8e4_P0_$p0|--mobility 8e4 --P0 $p0 --time $TS"); done
 for a in 1.2 2 3; do runs+=("outlet_$a|--mobility 8e4 --time $TS --outlet $a"); done
 # The avalanche size against the outlet scatters from seed to seed: seeds 2..OUTLET_SEEDS as well.
 OUTLET_SEEDS=${OUTLET_SEEDS:-3}
@@ -38,11 +44,11 @@ for seed in $(seq 2 "$OUTLET_SEEDS"); do
   for a in 1.2 1.4 2 3; do runs+=("outlet_${a}_s$seed|--mobility 8e4 --time $TS --outlet $a --seed $seed"); done
 done
 for a in 1.2 1.4 2 3; do runs+=("sticky_$a|--mobility 8e4 --time $TS --outlet $a --contact sticky --attraction 0.05"); done
-# One run and its avalanches: NAME OPTIONS... (Euler unless the options name an integrator).
+# One run and its avalanches: NAME OPTIONS... (rkc unless the options name an integrator).
 run_one() {
   local name=$1
   shift
-  local integrator=(--integrator euler) seed=(--seed 1)
+  local integrator=(--integrator rkc) seed=(--seed 1)
   case " $* " in *" --integrator "*) integrator=() ;; esac
   case " $* " in *" --seed "*) seed=() ;; esac
   echo "== jam2d chamber ${seed[*]} $*" >&2
@@ -77,8 +83,9 @@ def summary(name):
                 size=float(m["mean_size"]), ratio=float(m["drop_over_rise_rate"]), tail=int(m["tail_events"]),
                 scale=float(m["tail_scale_over_mean_drop"]), ks=float(m["tail_ks_distance"]), cP=cp, cells=cells,
                 span=float(m["to"]) - float(m["from"]))
-S = {name: summary(name) for name in ["nofb", "fb", "gear3", "nofb_mu2e4", "nofb_mu3.2e5", "fb_mu5e2", "fb_mu5e4",
+S = {name: summary(name) for name in ["nofb", "fb", "gear3", "euler", "nofb_mu2e4", "nofb_mu3.2e5", "fb_mu5e2", "fb_mu5e4",
                                       "fb_P0_0.02", "fb_P0_0.005", "nofb_mu2e3"]
+     + [f"fb_mu8e4_P0_{p}" for p in ("0.1", "0.07", "0.02")]
      + [f"outlet_{a}" for a in ("1.2", "2", "3")] + [f"sticky_{a}" for a in ("1.2", "1.4", "2", "3")]}
 S["outlet_1.4"] = S["nofb"]
 # The avalanche size per outlet over seeds 1..outlet_seeds (seed 1 at a = 1.4 is the main run,
@@ -97,13 +104,15 @@ lines = [
     "| quantity | here | thesis |",
     "|---|---|---|",
     f"| ⟨P⟩ without feedback (μ = 8×10⁴), wall pressure | {n['P']:.3f} k ({n['events']} events over {n['span']:.0f}/γ) | 0.19 k |",
-    f"| the same with the Gear integrator (over {S['gear3']['span']:.0f}/γ) | {S['gear3']['P']:.3f} k | (Gear) |",
+    f"| the same with the Gear integrator / Euler (over {S['gear3']['span']:.0f}/γ) | {S['gear3']['P']:.3f} / {S['euler']['P']:.3f} k | (Gear) |",
+    f"| mean drop ⟨ΔP⟩ and c_P: Runge-Kutta-Chebyshev / Gear / Euler | {n['drop']:.3f} / {S['gear3']['drop']:.3f} / {S['euler']['drop']:.3f} k; {n['cP']:.2f} / {S['gear3']['cP']:.2f} / {S['euler']['cP']:.2f} | |",
     f"| cells in the chamber | {n['cells']:.0f} | \"up to about 100\" (experiment) |",
     f"| drops above the mean: exponential? | scale {n['scale']:.2f} ⟨ΔP⟩, KS distance {n['ks']:.3f} for {n['tail']} drops (5 % critical value {ks_crit:.3f}) | \"nearly exponentially distributed\" |",
     f"| Ṗ↓/Ṗ↑, no feedback, μ = 2×10⁴ / 8×10⁴ / 3.2×10⁵ | {S['nofb_mu2e4']['ratio']:.2f} / {n['ratio']:.2f} / {S['nofb_mu3.2e5']['ratio']:.2f} | rises with μ; 8×10⁴ fits the experiment (Fig. S2.10b) |",
     f"| Ṗ↓/Ṗ↑, feedback P0 = 0.07 k, μ = 5×10² / 2×10³ / 5×10⁴ | {S['fb_mu5e2']['ratio']:.2f} / {S['fb']['ratio']:.2f} / {S['fb_mu5e4']['ratio']:.2f} | rises with μ; 2×10³ fits (Fig. S2.10c) |",
     f"| ⟨P⟩ at μ = 2×10³: P0 = ∞ / 0.07 / 0.02 / 0.005 k | {S['nofb_mu2e3']['P']:.3f} / {S['fb']['P']:.3f} / {S['fb_P0_0.02']['P']:.3f} / {S['fb_P0_0.005']['P']:.3f} k | rises as P0 falls (Fig. S2.11) |",
     f"| c_P at μ = 2×10³: P0 = ∞ / 0.07 / 0.02 / 0.005 k | {S['nofb_mu2e3']['cP']:.2f} / {S['fb']['cP']:.2f} / {S['fb_P0_0.02']['cP']:.2f} / {S['fb_P0_0.005']['cP']:.2f} | falls by about 40 % (Fig. S2.11) |",
+    f"| ⟨P⟩ and c_P at μ = 8×10⁴: P0 = ∞ / 0.1 / 0.07 / 0.02 k | {n['P']:.3f} / " + " / ".join(f"{S['fb_mu8e4_P0_'+p]['P']:.3f}" for p in ("0.1", "0.07", "0.02")) + f" k; {n['cP']:.2f} / " + " / ".join(f"{S['fb_mu8e4_P0_'+p]['cP']:.2f}" for p in ("0.1", "0.07", "0.02")) + " | ⟨P⟩ rises, c_P falls by about 40 % (Fig. S2.11) |",
     "| ⟨P⟩ against the outlet a = 1.2 / 1.4 / 2 / 3 σ, no attraction | " + " / ".join(f"{S['outlet_'+a]['P']:.3f}" for a in ("1.2", "1.4", "2", "3")) + " k | falls with a (Fig. S2.13) |",
     "| mean avalanche (cells) against a, no attraction, seed 1 | " + " / ".join(f"{S['outlet_'+a]['size']:.1f}" for a in ("1.2", "1.4", "2", "3")) + " | grows with a (Fig. S2.13) |",
     f"| the same, mean ± standard error over seeds 1-{outlet_seeds} | " + " / ".join(f"{size_over_seeds[a][0]:.1f} ± {size_over_seeds[a][1]:.1f}" for a in ("1.2", "1.4", "2", "3")) + " | grows with a (Fig. S2.13) |",
