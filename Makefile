@@ -105,7 +105,7 @@ percolation-figure: deps all
 jam2d-figures: deps all
 	@scripts/figures/jam2d.sh $(BUILD) $(OUT)/figures
 # Chapter 2's chamber (jam2d chamber, avalanches): Figs 2.2b-e, S2.10, S2.11, S2.13, 2.4c and the
-# table beside the thesis's numbers, about 10 minutes on 2 cores (TIME, SWEEP_TIME; $(OUT)/figures/).
+# table beside the thesis's numbers, about 20 minutes on 2 cores (TIME, SWEEP_TIME, CHECK_TIME; $(OUT)/figures/).
 chamber-figures: deps all
 	@scripts/figures/chamber.sh $(BUILD) $(OUT)/figures
 # The Chapter 5 chain on inflated jammed spheres: shellpack jam -> percolate -> lbflow -> kcfit,
