@@ -90,6 +90,4 @@ std::unique_ptr<OverdampedIntegrator> make_chebyshev_integrator() { return std::
 
 double chebyshev_stability_limit() { return coefficients().beta; }
 
-int chebyshev_stages() { return kStages; }
-
 }  // namespace cmp::cells2d

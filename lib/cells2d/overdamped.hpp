@@ -55,11 +55,10 @@ struct IntegratorStyle {
 
 const std::vector<IntegratorStyle>& integrator_styles();
 
-// The damped Runge-Kutta-Chebyshev style (chebyshev_integrator.cpp): its integrator, its
-// stability interval beta_s and its evaluations per step s.
+// The damped Runge-Kutta-Chebyshev style (chebyshev_integrator.cpp): its integrator and its
+// stability interval beta_s.
 std::unique_ptr<OverdampedIntegrator> make_chebyshev_integrator();
 double chebyshev_stability_limit();
-int chebyshev_stages();
 // Throws cmp::UsageError "unknown integrator 'x' (known: ...)".
 const IntegratorStyle& integrator_style(const std::string& name);
 

@@ -237,8 +237,7 @@ CompressionRow Compression::advance(const RelaxProgress& progress) {
     step_relax.relative_tolerance = options_.between_tolerance;
     // Pi starts moving inside FIRE at the same residual as at a target (volume_update_factor
     // times the targets' tolerance), not that factor above the looser one: far from
-    // equilibrium the volumes do not answer to Pi, and updates made there kept a rearrangement
-    // of 50 x 2,562 shells going for over 30,000 iterations.
+    // equilibrium the volumes do not yet answer to Pi.
     step_relax.volume_update_factor = std::max(
         1.0, relax_.volume_update_factor * relax_.relative_tolerance / options_.between_tolerance);
   }
