@@ -51,12 +51,14 @@ double max_block_norm(const Eigen::VectorXd& f, int block_size) {
 }
 
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& p,
-                const FireProgress& progress, long progress_every, const FireAdjust& adjust) {
+                const FireProgress& progress, long progress_every, const FireAdjust& adjust,
+                const FireConstraint& constrain) {
   p.validate();
   if (x.size() % p.block_size != 0) throw UsageError("FIRE: state size is not a multiple of the block size");
   FireResult result;
   const Eigen::Index n = x.size();
   Eigen::VectorXd f(n), v = Eigen::VectorXd::Zero(n);
+  if (constrain) constrain(x, v);
   forces(x, f);
   result.force_evaluations = 1;
   double dt = p.dt, alpha = p.alpha_start, dt_max = p.dt_max;
@@ -124,6 +126,7 @@ FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParam
       sums[c] = {power, vv, ff, worst};
     };
     for_each_chunk(chunks, parallel, drift);
+    if (constrain) constrain(x, v);
     forces(x, f);
     ++result.force_evaluations;
     for_each_chunk(chunks, parallel, kick_and_measure);

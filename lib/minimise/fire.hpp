@@ -83,12 +83,18 @@ using FireProgress = std::function<bool(long iterations, double max_force)>;
 // (the velocity is kept).
 using FireAdjust = std::function<bool(long iterations, double max_force)>;
 
+// Called after every drift (and once before the first force evaluation, with v = 0) to put x
+// back on a constraint surface and v into its tangent space (shell/volume_constraint.hpp); the
+// forces function then returns forces tangent to it. Empty: unconstrained.
+using FireConstraint = std::function<void(Eigen::VectorXd& x, Eigen::VectorXd& v)>;
+
 // Relaxes x in place until max_i |f_i| <= force_tolerance or max_iterations steps.
 // x.size() must be a multiple of block_size. Deterministic: the same x and forces give the
 // same path, whatever the thread count. Cost per iteration: one force evaluation plus
 // O(size) vector work.
 FireResult fire(Eigen::VectorXd& x, const ForceFunction& forces, const FireParameters& parameters,
-                const FireProgress& progress = {}, long progress_every = 1000, const FireAdjust& adjust = {});
+                const FireProgress& progress = {}, long progress_every = 1000, const FireAdjust& adjust = {},
+                const FireConstraint& constrain = {});
 
 // max_i |f_i| over consecutive blocks of block_size coordinates.
 double max_block_norm(const Eigen::VectorXd& f, int block_size);

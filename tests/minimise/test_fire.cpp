@@ -92,6 +92,40 @@ TEST_CASE("FIRE's adjust hook may move the force field mid-run: forces are re-ev
   CHECK((x - 0.5 * first).cwiseAbs().maxCoeff() < 1e-9);
 }
 
+TEST_CASE("FIRE's constraint hook keeps x on a surface: the bowl's minimum on the unit sphere") {
+  // min sum_k c_k (x_k - a_k)^2 / 2 on |x| = 1: x back onto the sphere after every drift, v
+  // and f tangent to it. At the minimum the bowl's force is normal to the sphere.
+  const Bowl bowl(12);
+  FireParameters p;
+  p.force_tolerance = 1e-12;
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(12, 0.3);  // off the sphere: the first call puts it on
+  long calls = 0;
+  double worst_off = 0;
+  const auto r = fire(
+      x,
+      [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+        worst_off = std::max(worst_off, std::abs(y.norm() - 1));
+        bowl(y, f);
+        f -= f.dot(y) * y;  // tangent at y (|y| = 1)
+      },
+      p, {}, 1000, {},
+      [&](Eigen::VectorXd& y, Eigen::VectorXd& v) {
+        ++calls;
+        y.normalize();
+        v -= v.dot(y) * y;
+      });
+  CHECK(r.converged());
+  CHECK(calls == r.iterations + 1);  // before the first force and after every drift
+  CHECK(worst_off < 1e-15);
+  Eigen::VectorXd g;
+  bowl(x, g);
+  // The bowl's force is parallel to x at the constrained minimum, and not zero there.
+  CHECK((g - g.dot(x) * x).norm() <= 1e-11);
+  CHECK(g.norm() > 0.1);
+  // Unconstrained, FIRE ends elsewhere (the bowl's centre is not on the sphere).
+  CHECK(std::abs(bowl.centre.norm() - 1) > 0.1);
+}
+
 TEST_CASE("FIRE follows the thesis's time step rules") {
   // On a single stiff coordinate the power turns negative at the first overshoot: the step is
   // then cut by f_dec and the velocity zeroed, and the run still converges.
