@@ -1,13 +1,17 @@
 #include "shell/relax.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include "core/errors.hpp"
 #include "core/thread_governor.hpp"
 #include "mesh/edge_topology.hpp"
 #include "shell/element_assembly.hpp"
+#include "shell/volume_constraint.hpp"
 #include "shell/volume_rule.hpp"
 #include "shell/volume_update_window.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace cmp::shell {
 
@@ -44,7 +48,7 @@ std::string relax_stop_name(RelaxStop stop) {
   return "?";
 }
 
-double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterations) {
+double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int steps) {
   const Eigen::Index n = x.size();
   // A deterministic start with every component (fixed vertices masked out).
   Eigen::VectorXd v(n);
@@ -54,20 +58,36 @@ double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterati
   double scale = 0;
   for (Eigen::Index i = 0; i < n; ++i) scale = std::max(scale, std::abs(x[i]));
   const double eps = 1e-7 * std::max(scale, 1e-300);
-  Eigen::VectorXd fp(n), fm(n);
-  double lambda = 0;
+  const double norm = v.norm();
+  if (!(norm > 0)) return 0;
+  v /= norm;
+  // Lanczos: the Krylov space of H from v, as the tridiagonal T (alpha on the diagonal, beta
+  // beside it); T's largest eigenvalue approaches H's far faster than a power iteration's
+  // Rayleigh quotient (12 steps of it come closer than 30 power steps: each step is two force
+  // evaluations, and one such estimate precedes every relaxation).
+  Eigen::VectorXd previous = Eigen::VectorXd::Zero(n), fp(n), fm(n), w(n);
+  std::vector<double> alpha, beta;
   ThreadGovernor governor;  // one thread or all, whichever is faster now (same bits either way)
-  for (int it = 0; it < iterations; ++it, governor.tick()) {
-    const double norm = v.norm();
-    if (!(norm > 0)) break;
-    v /= norm;
+  for (int j = 0; j < steps; ++j, governor.tick()) {
     s.forces(x + eps * v, fp);
     s.forces(x - eps * v, fm);
-    Eigen::VectorXd hv = (fm - fp) / (2 * eps);  // H v = -(dF/dx) v
-    lambda = v.dot(hv);
-    v = hv;
+    w = (fm - fp) / (2 * eps);  // H v = -(dF/dx) v
+    const double a = v.dot(w);
+    alpha.push_back(a);
+    w -= a * v;
+    if (j > 0) w -= beta.back() * previous;
+    const double b = w.norm();
+    if (!(b > 1e-12 * std::abs(a)) || j + 1 == steps) break;
+    beta.push_back(b);
+    previous = v;
+    v = w / b;
   }
-  return std::abs(lambda);
+  const Eigen::Index m = static_cast<Eigen::Index>(alpha.size());
+  Eigen::VectorXd diagonal = Eigen::Map<const Eigen::VectorXd>(alpha.data(), m);
+  Eigen::VectorXd off = m > 1 ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(beta.data(), m - 1)) : Eigen::VectorXd();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
+  solver.computeFromTridiagonal(diagonal, off, Eigen::EigenvaluesOnly);
+  return std::abs(solver.eigenvalues().cwiseAbs().maxCoeff());
 }
 
 namespace {
@@ -85,7 +105,13 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
   TurgorPressure* pressure = s.pressure();
   minimise::FireAdjust adjust;
   VolumeUpdateWindow window(fp.force_tolerance, p.volume_update_factor, p.volume_update_interval);
-  if (pressure && pressure->control() == PressureControl::ConstantVolume) {
+  std::optional<VolumeConstraint> constraint;
+  minimise::FireConstraint constrain;
+  if (pressure && pressure->control() == PressureControl::ConstantVolume && p.volume_rule == VolumeRuleKind::Projected &&
+      p.holds_volume()) {
+    constraint.emplace(*pressure, s.fixed());
+    constrain = [&](Eigen::VectorXd& y, Eigen::VectorXd& v) { constraint->project(y, v); };
+  } else if (pressure && pressure->control() == PressureControl::ConstantVolume) {
     adjust = [&, pressure](long it, double max_force) {
       if (r.volume_updates >= p.max_volume_updates || !window.open(it, max_force)) return false;
       const double error = pressure->volume_error(span_of(s.x));
@@ -97,9 +123,14 @@ void fire_once(ShellSystem& s, const RelaxParameters& p, double mass, RelaxResul
     };
   }
   const auto res = minimise::fire(
-      s.x, [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) { s.forces(y, f); }, fp,
-      [&](long it, double max_force) { return !progress || progress(before + it, max_force / p.force_scale); }, 200,
-      adjust);
+      s.x,
+      [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+        if (!constraint) return s.forces(y, f);
+        s.forces_without(pressure, y, f);
+        constraint->project_force(y, f);
+      },
+      fp, [&](long it, double max_force) { return !progress || progress(before + it, max_force / p.force_scale); },
+      200, adjust, constrain);
   r.iterations += res.iterations;
   r.force_evaluations += res.force_evaluations;
   r.residual = res.max_force / p.force_scale;

@@ -9,9 +9,11 @@
 // coordinate is set from the stiffest mode of the start state (a power iteration on the
 // Hessian), so FIRE's time steps (dt_max = 1.5) are stable whatever the units and the mesh.
 //
-// Constant volume (TurgorPressure with PressureControl::ConstantVolume, 5.2.1): relax, and
-// while some shell is off its target volume by more than 0.1 %, update its Pi by
-// Pi <- Pi (1 + (V0 - V)/V) and relax again. The same fixed point is reached with far fewer
+// Constant volume (TurgorPressure with PressureControl::ConstantVolume, 5.2.1), by default
+// (VolumeRuleKind::Projected): every volume held at its target inside FIRE, each Pi the
+// constraint's multiplier (volume_constraint.hpp), one FIRE run with no updates. The thesis's
+// loop and the accelerated rule instead: relax, and while some shell is off its target volume
+// by more than 0.1 %, update its Pi by Pi <- Pi (1 + (V0 - V)/V) and relax again. The same fixed point is reached with far fewer
 // iterations when Pi moves while x relaxes: once FIRE's residual is below
 // volume_update_factor times the force tolerance (x near equilibrium for the current Pi, so
 // V answers to it), the volumes are checked every volume_update_interval iterations and at
@@ -27,6 +29,7 @@
 
 #include "minimise/fire.hpp"
 
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -38,20 +41,24 @@ struct RelaxParameters {
   double force_scale = 1.0;          // [force]; default_force_scale() for a shell
   double mass_factor = 1.0;          // FIRE mass = this * lambda_max * (dt_max / 1.5)^2: dt_max stable with margin 4/3
   double volume_tolerance = 1e-3;    // constant volume: |V - V0| <= this * V0
-  int max_volume_updates = 500;      // constant volume: Pi updates before giving up
+  int max_volume_updates = 500;      // constant volume: Pi updates before giving up (0: Pi held, the volumes free)
   double volume_update_factor = 100; // constant volume: Pi moves inside FIRE once max|f_i| <= this * the tolerance
   int volume_update_interval = 20;   // ... checked every this many FIRE iterations (and at convergence)
-  VolumeRuleKind volume_rule = VolumeRuleKind::Accelerated;  // constant volume: how Pi moves (volume_rule.hpp)
+  VolumeRuleKind volume_rule = VolumeRuleKind::Projected;  // constant volume: how Pi moves (volume_rule.hpp)
   // Throws cmp::UsageError naming the first bad field.
   void validate() const;
+  // Whether a constant-volume pressure holds its volumes: not with no updates allowed or an
+  // infinite tolerance (an inflation at fixed Pi), whatever the rule.
+  bool holds_volume() const { return max_volume_updates > 0 && std::isfinite(volume_tolerance); }
 };
 
 // E t a: Young's modulus times thickness times the mean rest edge length of the mesh.
 double default_force_scale(const mesh::TriMesh& rest, double youngs_modulus, double thickness);
 
 // The largest eigenvalue of the Hessian of the system's energy at x (fixed vertices left
-// out), by power iteration on finite differences of the forces. [force / length]
-double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int iterations = 30);
+// out), by `steps` Lanczos steps on finite differences of the forces (two force evaluations
+// each). [force / length]
+double stiffest_mode(const ShellSystem& s, const Eigen::VectorXd& x, int steps = 12);
 
 enum class RelaxStop { Converged, MaxIterations, VolumeUpdates, Interrupted };
 std::string relax_stop_name(RelaxStop stop);

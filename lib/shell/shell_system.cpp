@@ -63,10 +63,13 @@ double ShellSystem::energy(const Eigen::VectorXd& y) const {
   return e;
 }
 
-void ShellSystem::forces(const Eigen::VectorXd& y, Eigen::VectorXd& f) const {
+void ShellSystem::forces(const Eigen::VectorXd& y, Eigen::VectorXd& f) const { forces_without(nullptr, y, f); }
+
+void ShellSystem::forces_without(const EnergyTerm* left_out, const Eigen::VectorXd& y, Eigen::VectorXd& f) const {
   // The terms add their gradients into f itself, negated once at the end (no second vector).
   f.setZero(y.size());
-  for (const auto& t : terms_) t->add_gradient(span_of(y), span_of(f));
+  for (const auto& t : terms_)
+    if (t.get() != left_out) t->add_gradient(span_of(y), span_of(f));
   f = -f;
   for (long v = 0; v < vertex_count(); ++v)
     if (fixed_[v]) f.segment<3>(3 * v).setZero();

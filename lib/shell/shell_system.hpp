@@ -57,6 +57,8 @@ class ShellSystem {
   double energy(const Eigen::VectorXd& y) const;
   // f = -grad E at y, zero on the fixed vertices (f is resized).
   void forces(const Eigen::VectorXd& y, Eigen::VectorXd& f) const;
+  // The same without one term's part (a constraint that projects that part out anyway).
+  void forces_without(const EnergyTerm* left_out, const Eigen::VectorXd& y, Eigen::VectorXd& f) const;
   // Each term's energy at y, in the order of terms().
   std::vector<double> term_energies(const Eigen::VectorXd& y) const;
 

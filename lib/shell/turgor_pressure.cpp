@@ -131,6 +131,18 @@ void TurgorPressure::add_gradient(std::span<const double> x, std::span<double> g
   });
 }
 
+void TurgorPressure::volume_gradient(std::span<const double> x, std::span<double> n) const {
+  check_sizes(x, n);
+  std::fill(n.begin(), n.end(), 0.0);
+  const std::vector<double> sixth(turgor_.size(), 1.0 / 6.0);  // dV/dx_a = sum_faces (b x c)/6
+  const int chunks = vertex_chunks_;
+  const bool parallel = ElementAssembly::runs_parallel(static_cast<long>(face_shell_.size()));
+  for_each_chunk(chunks, parallel, [&](int c) {
+    pressure_gather(x.data(), first_.data(), ring_.data(), vertex_shell_.data(), sixth.data(),
+                    chunk_begin(vertex_count_, chunks, c), chunk_begin(vertex_count_, chunks, c + 1), n.data());
+  });
+}
+
 void TurgorPressure::set_turgor(double pi) {
   validate(PressureParameters{pi}, name().c_str());
   for (double& t : turgor_) t = pi;

@@ -59,6 +59,11 @@ class TurgorPressure final : public EnergyTerm {
   void set_target_volumes(const std::vector<double>& v0);
   // The largest relative volume error max_s |V_s - V0_s| / V0_s at x.
   double volume_error(std::span<const double> x) const;
+  // n = dV_s/dx at x for every vertex (s its shell): the direction the turgor pushes along,
+  // and the one a constant-volume constraint acts along (volume_constraint.hpp). n is overwritten.
+  void volume_gradient(std::span<const double> x, std::span<double> n) const;
+  // The shell of every vertex.
+  const std::vector<int>& vertex_shells() const { return vertex_shell_; }
 
  private:
   void build_rings(const std::vector<int>& face_shell);

@@ -7,12 +7,20 @@
 
 namespace cmp::shell {
 
-std::string volume_rule_name(VolumeRuleKind kind) { return kind == VolumeRuleKind::Thesis ? "thesis" : "accelerated"; }
+std::string volume_rule_name(VolumeRuleKind kind) {
+  switch (kind) {
+    case VolumeRuleKind::Thesis: return "thesis";
+    case VolumeRuleKind::Accelerated: return "accelerated";
+    case VolumeRuleKind::Projected: return "projected";
+  }
+  return "?";
+}
 
 VolumeRuleKind parse_volume_rule(const std::string& name) {
   if (name == "thesis") return VolumeRuleKind::Thesis;
   if (name == "accelerated") return VolumeRuleKind::Accelerated;
-  throw UsageError("must be accelerated or thesis, got '" + name + "'");
+  if (name == "projected") return VolumeRuleKind::Projected;
+  throw UsageError("must be accelerated, projected or thesis, got '" + name + "'");
 }
 
 std::vector<double> VolumeRule::next(const std::vector<double>& pi, const std::vector<double>& v,

@@ -30,8 +30,10 @@
 
 namespace cmp::shell {
 
-enum class VolumeRuleKind { Thesis, Accelerated };
-// "thesis" / "accelerated"; the parser throws cmp::UsageError for another name.
+// Projected: no update rule; the volumes are held as constraints and each Pi is the
+// multiplier (volume_constraint.hpp), the same fixed point.
+enum class VolumeRuleKind { Thesis, Accelerated, Projected };
+// "thesis" / "accelerated" / "projected"; the parser throws cmp::UsageError for another name.
 std::string volume_rule_name(VolumeRuleKind kind);
 VolumeRuleKind parse_volume_rule(const std::string& name);
 

@@ -107,5 +107,6 @@ TEST_CASE("volume rule: one update moves Pi by at most a fifth", "[shell][volume
 TEST_CASE("volume rule: names", "[shell][volume]") {
   CHECK(parse_volume_rule("thesis") == VolumeRuleKind::Thesis);
   CHECK(parse_volume_rule(volume_rule_name(VolumeRuleKind::Accelerated)) == VolumeRuleKind::Accelerated);
+  CHECK(parse_volume_rule(volume_rule_name(VolumeRuleKind::Projected)) == VolumeRuleKind::Projected);
   CHECK_THROWS_AS(parse_volume_rule("secant"), cmp::UsageError);
 }

@@ -11,13 +11,14 @@
 namespace cmp::shellpack {
 
 struct VolumeRuleOption {
-  std::string name = shell::volume_rule_name(shell::VolumeRuleKind::Accelerated);
+  std::string name = shell::volume_rule_name(shell::VolumeRuleKind::Projected);
 
   void add(CLI::App& app) {
     app.add_option("--volume-rule", name,
-                   "constant volume, how Pi moves between relaxations: accelerated (the mean gap closed by a secant, "
-                   "overshooting shells damped) or thesis (Pi <- Pi (1 + (V0 - V)/V), 5.2.1: the same fixed point, "
-                   "more updates towards confluence)")
+                   "constant volume, how Pi is found: projected (every volume held at its target inside FIRE, Pi "
+                   "the constraint's multiplier), accelerated (Pi updated between and inside relaxations, the mean "
+                   "gap closed by a secant, overshooting shells damped) or thesis (Pi <- Pi (1 + (V0 - V)/V), "
+                   "5.2.1); the same fixed point, within 0.1 % of each volume for the updated rules")
         ->capture_default_str();
   }
   void apply(cli::Tool& tool, shell::RelaxParameters& relax) const {
