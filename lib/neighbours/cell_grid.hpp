@@ -46,6 +46,11 @@ class CellGrid {
   // particular order of i and j. Throws cmp::UsageError if X has a different number of rows.
   template <class Fn>
   void for_each_pair(const mesh::VertexMatrix& X, Fn&& f) const;
+  // The pairs for_each_pair finds from the cells [cell_begin, cell_end) (each pair of points
+  // comes from one cell only): consecutive ranges cover for_each_pair's calls in its order, so
+  // ranges on several threads, joined in order, give the same pairs.
+  template <class Fn>
+  void for_each_pair_in_cells(const mesh::VertexMatrix& X, int cell_begin, int cell_end, Fn&& f) const;
 
   // Calls f(j, d, r2) for every point j of X with r2 = |d|^2 < cutoff^2, d = p - x_j (minimum
   // image). p need not be a point of X; if it is, that point comes too, with r2 = 0.
@@ -139,11 +144,15 @@ void CellGrid::for_each_stencil_cell(int cell, Fn&& f) const {
 
 template <class Fn>
 void CellGrid::for_each_pair(const mesh::VertexMatrix& X, Fn&& f) const {
+  for_each_pair_in_cells(X, 0, cell_count(), f);
+}
+
+template <class Fn>
+void CellGrid::for_each_pair_in_cells(const mesh::VertexMatrix& X, int cell_begin, int cell_end, Fn&& f) const {
   check_rows(X);
   const double* x = X.data();
   const int* sorted = sorted_.data();
-  const int cells = cell_count();
-  for (int c = 0; c < cells; ++c) {
+  for (int c = cell_begin; c < cell_end; ++c) {
     const int begin = cell_start_[c], end = cell_start_[c + 1];
     if (begin == end) continue;
     double d[3];

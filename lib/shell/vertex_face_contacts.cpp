@@ -47,8 +47,32 @@ void VertexFaceContacts::set_box(const Eigen::Vector3d& lengths, std::array<bool
       throw UsageError("hertz-faces: the periodic box side " + std::to_string(lengths[a]) +
                        " is shorter than 4 contact distances (" + std::to_string(4.0 * delta_) + ")");
   }
+  // The same box scaled by one factor on every side (the affine step of a compression) keeps
+  // the list: its reference positions scale with the box (candidates_hold measures each move
+  // from there), and what it tolerates shrinks by what the scaling took from its reach.
+  if (list_valid_ && box_ && box_->periodic == periodic) {
+    const double s = lengths[0] / box_->lengths[0];
+    bool uniform = s > 0;
+    for (int a = 1; a < 3; ++a) uniform = uniform && std::abs(lengths[a] / box_->lengths[a] - s) <= 1e-12 * s;
+    if (uniform) {
+      for (double& r : reference_) r *= s;
+      list_scale_ *= s;
+      tolerated_move_ = tolerated_move(list_scale_);
+      list_valid_ = tolerated_move_ > 0;
+      box_ = BoxSides{lengths, periodic};
+      return;
+    }
+  }
   box_ = BoxSides{lengths, periodic};
   list_valid_ = false;
+}
+
+double VertexFaceContacts::tolerated_move(double scale) const {
+  // A triangle at least delta + skin from x_i at the build is at least scale (delta + skin) from
+  // it in the scaled reference, and stays beyond delta while x_i and its corners each move less
+  // than half the difference (the point of the moved triangle with the old closest weights moves
+  // no more than its corners); a little less, for round-off.
+  return 0.5 * (scale * (delta_ + skin_) - delta_) * (1.0 - 1e-9);
 }
 
 namespace {
@@ -102,23 +126,39 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const double* inverse = images.inverse;
   const double* X = scratch_.data();
   // reach_ per vertex: delta + the longest edge of its triangles (minimum image: a shell may
-  // straddle a periodic face) / sqrt(3).
-  reach_.assign(static_cast<std::size_t>(n), 0.0);
-  double longest2 = 0;
-  for (std::size_t f = 0; f < faces_.size(); f += 3) {
-    double face2 = 0;
-    for (int k = 0; k < 3; ++k) {
-      double e[3];
-      const double* a = X + 3 * faces_[f + k];
-      const double* b = X + 3 * faces_[f + (k + 1) % 3];
-      for (int c = 0; c < 3; ++c) e[c] = cmp::minimum_image(a[c] - b[c], periods[c], inverse[c]);
-      face2 = std::max(face2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  // straddle a periodic face) / sqrt(3). Each face's longest edge, then each vertex's largest
+  // over its faces, both on all threads (a max: the same on any thread count).
+  const long nf = static_cast<long>(faces_.size() / 3);
+  face_longest2_.resize(static_cast<std::size_t>(nf));
+  const int face_chunks = static_cast<int>(std::max<long>(1, (nf + 2 * kChunkVertices - 1) / (2 * kChunkVertices)));
+  std::vector<double> chunk_longest2(static_cast<std::size_t>(face_chunks), 0.0);
+  for_each_chunk(face_chunks, parallel(), [&](int c) {
+    double longest = 0;
+    for (long f = chunk_begin(nf, face_chunks, c), end = chunk_begin(nf, face_chunks, c + 1); f < end; ++f) {
+      double face2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        double e[3];
+        const double* a = X + 3 * faces_[3 * f + k];
+        const double* b = X + 3 * faces_[3 * f + (k + 1) % 3];
+        for (int c3 = 0; c3 < 3; ++c3) e[c3] = cmp::minimum_image(a[c3] - b[c3], periods[c3], inverse[c3]);
+        face2 = std::max(face2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      }
+      face_longest2_[f] = face2;
+      longest = std::max(longest, face2);
     }
-    for (int k = 0; k < 3; ++k) reach_[faces_[f + k]] = std::max(reach_[faces_[f + k]], face2);
-    longest2 = std::max(longest2, face2);
-  }
+    chunk_longest2[c] = longest;
+  });
+  const double longest2 = *std::max_element(chunk_longest2.begin(), chunk_longest2.end());
   const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
-  for (double& r : reach_) r = delta_ + std::sqrt(r * third);
+  reach_.resize(static_cast<std::size_t>(n));
+  const int vertex_chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  for_each_chunk(vertex_chunks, parallel(), [&](int c) {
+    for (Eigen::Index v = chunk_begin(n, vertex_chunks, c), end = chunk_begin(n, vertex_chunks, c + 1); v < end; ++v) {
+      double r = 0;
+      for (int k = incident_start_[v]; k < incident_start_[v + 1]; ++k) r = std::max(r, face_longest2_[incident_[k]]);
+      reach_[v] = delta_ + std::sqrt(r * third);
+    }
+  });
   const double longest = std::sqrt(longest2), base = delta_ + std::sqrt(longest2 * third);
   const double skin = kSkin * base, cutoff = base + skin;
   if (box_)
@@ -127,17 +167,26 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
         throw ComputationError("hertz-faces: the periodic box side " + std::to_string(box_->lengths[a]) +
                                " is under 2 (delta + 0.58 longest edge + skin + longest edge) = " +
                                std::to_string(2.0 * (cutoff + longest)));
-  // Broad phase: vertex pairs of different shells within the cutoff (one pass over the cells,
-  // on one thread), kept in the direction(s) i -> j where x_i is within j's reach + skin: a
-  // triangle within delta + skin of x_i has such a corner j.
+  // Broad phase: vertex pairs of different shells within the cutoff, kept in the direction(s)
+  // i -> j where x_i is within j's reach + skin: a triangle within delta + skin of x_i has such
+  // a corner j. Fixed chunks of cells on all threads, joined in order (the pairs of one pass).
   const neighbours::CellGrid grid = contact_grid(scratch_, cutoff, box_, "hertz-faces");
-  pairs_.clear();
-  grid.for_each_pair(scratch_, [&](int i, int j, const Eigen::Vector3d&, double r2) {
-    if (shell_of_[i] == shell_of_[j]) return;
-    const double rj = reach_[j] + skin, ri = reach_[i] + skin;
-    if (r2 < rj * rj) pairs_.insert(pairs_.end(), {i, j});
-    if (r2 < ri * ri) pairs_.insert(pairs_.end(), {j, i});
+  const int cell_chunks = parallel() ? kBroadPhaseChunks : 1;
+  std::vector<std::vector<int>> chunk_pairs(static_cast<std::size_t>(cell_chunks));
+  for_each_chunk(cell_chunks, parallel(), [&](int c) {
+    std::vector<int>& out = chunk_pairs[static_cast<std::size_t>(c)];
+    out.clear();
+    grid.for_each_pair_in_cells(scratch_, static_cast<int>(chunk_begin(grid.cell_count(), cell_chunks, c)),
+                                static_cast<int>(chunk_begin(grid.cell_count(), cell_chunks, c + 1)),
+                                [&](int i, int j, const Eigen::Vector3d&, double r2) {
+                                  if (shell_of_[i] == shell_of_[j]) return;
+                                  const double rj = reach_[j] + skin, ri = reach_[i] + skin;
+                                  if (r2 < rj * rj) out.insert(out.end(), {i, j});
+                                  if (r2 < ri * ri) out.insert(out.end(), {j, i});
+                                });
   });
+  pairs_.clear();
+  for (const std::vector<int>& out : chunk_pairs) pairs_.insert(pairs_.end(), out.begin(), out.end());
   std::vector<int> partner_start(static_cast<std::size_t>(n) + 1, 0), partners(pairs_.size() / 2);
   for (std::size_t k = 0; k < pairs_.size(); k += 2) ++partner_start[pairs_[k] + 1];
   for (Eigen::Index v = 0; v < n; ++v) partner_start[v + 1] += partner_start[v];
@@ -152,12 +201,14 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
   std::vector<std::vector<int>> kept(static_cast<std::size_t>(chunks));
   std::vector<std::vector<std::uint8_t>> kept_images(static_cast<std::size_t>(chunks));
+  std::vector<std::vector<double>> kept_gaps(static_cast<std::size_t>(chunks));
   candidate_start_.assign(static_cast<std::size_t>(n) + 1, 0);
   const double keep2 = (delta_ + skin) * (delta_ + skin);
   for_each_chunk(chunks, parallel(), [&](int c) {
     std::vector<int> mine;
     std::vector<int>& faces = kept[static_cast<std::size_t>(c)];
     std::vector<std::uint8_t>& codes = kept_images[static_cast<std::size_t>(c)];
+    std::vector<double>& gaps = kept_gaps[static_cast<std::size_t>(c)];
     for (Eigen::Index i = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); i < end; ++i) {
       mine.clear();
       for (int t = partner_start[i]; t < partner_start[i + 1]; ++t) {
@@ -175,8 +226,8 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
           int cc = 0;
           for (int a = 2; a >= 0; --a) {
             const double raw = v[a] - p[a];
-            const long shift =
-                periods[a] > 0 ? std::lround((cmp::minimum_image(raw, periods[a], inverse[a]) - raw) / periods[a]) : 0;
+            // The box sides to add for the minimum image: minimum_image(raw) = raw - L nearbyint(raw / L).
+            const long shift = periods[a] > 0 ? -static_cast<long>(std::nearbyint(raw * inverse[a])) : 0;
             cc = 3 * cc + static_cast<int>(shift + 1);
             if (shift < -1 || shift > 1) cc = -1000;
           }
@@ -184,9 +235,11 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
         }
         Eigen::Vector3d w;
         const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, code, kStraddles, w);
-        if (!(q.squaredNorm() < keep2)) continue;
+        const double q2 = q.squaredNorm();
+        if (!(q2 < keep2)) continue;
         faces.push_back(f);
         codes.push_back(static_cast<std::uint8_t>(code));
+        gaps.push_back(std::sqrt(q2));
         ++count;
       }
       candidate_start_[i + 1] = count;
@@ -195,9 +248,11 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   for (Eigen::Index v = 0; v < n; ++v) candidate_start_[v + 1] += candidate_start_[v];
   candidates_.clear();
   candidate_images_.clear();
+  candidate_gap_.clear();
   for (int c = 0; c < chunks; ++c) {
     candidates_.insert(candidates_.end(), kept[c].begin(), kept[c].end());
     candidate_images_.insert(candidate_images_.end(), kept_images[c].begin(), kept_images[c].end());
+    candidate_gap_.insert(candidate_gap_.end(), kept_gaps[c].begin(), kept_gaps[c].end());
   }
   // The gather's index (add_gradient on all threads only): per vertex, the candidates of other
   // vertices whose triangle has it as a corner, in ascending candidate order (the order of a
@@ -217,21 +272,33 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
         for (int k = 0; k < 3; ++k) corner_uses_[next[faces_[3 * candidates_[s] + k]]++] = {static_cast<int>(s), c, k};
   }
   reference_.assign(x.begin(), x.end());
-  // A triangle at least delta + skin from x_i stays beyond delta while x_i and its corners each
-  // move less than skin / 2 (the point of the moved triangle with the old closest weights
-  // moves no more than its corners); a little less, for round-off.
-  tolerated_move_ = 0.5 * skin * (1.0 - 1e-9);
+  moved_.assign(static_cast<std::size_t>(n), 0.0);
+  skin_ = skin;
+  list_scale_ = 1.0;
+  ++list_builds_;
+  tolerated_move_ = tolerated_move(1.0);
   list_valid_ = true;
 }
 
 bool VertexFaceContacts::candidates_hold(std::span<const double> x) const {
   if (!list_valid_ || reference_.size() != x.size()) return false;
-  const double limit2 = tolerated_move_ * tolerated_move_;
-  for (std::size_t k = 0; k < x.size(); k += 3) {
-    const double dx = x[k] - reference_[k], dy = x[k + 1] - reference_[k + 1], dz = x[k + 2] - reference_[k + 2];
-    if (!(dx * dx + dy * dy + dz * dz < limit2)) return false;
-  }
-  return true;
+  // Every vertex's move from the reference (collect() bounds each candidate's distance by it),
+  // per fixed chunk on all threads; the list holds while the largest is under the tolerance.
+  const long n = static_cast<long>(x.size() / 3);
+  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  moved_.resize(static_cast<std::size_t>(n));
+  std::vector<char> within(static_cast<std::size_t>(chunks), 1);
+  for_each_chunk(chunks, parallel(), [&](int c) {
+    bool ok = true;
+    for (long v = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1); v < end; ++v) {
+      const double dx = x[3 * v] - reference_[3 * v], dy = x[3 * v + 1] - reference_[3 * v + 1],
+                   dz = x[3 * v + 2] - reference_[3 * v + 2];
+      moved_[v] = std::sqrt(dx * dx + dy * dy + dz * dz);
+      ok = ok && moved_[v] < tolerated_move_;  // false for a NaN too
+    }
+    within[c] = ok;
+  });
+  return std::all_of(within.begin(), within.end(), [](char ok) { return ok != 0; });
 }
 
 void VertexFaceContacts::collect(std::span<const double> x) const {
@@ -250,6 +317,17 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
       const double* p = X + 3 * i;
       for (int s = candidate_start_[i]; s < candidate_start_[i + 1]; ++s) {
         const int f = candidates_[s];
+        // The triangle was at candidate_gap_ from x_i when the list was built (list_scale_
+        // times that in the scaled reference), and a distance to a triangle changes by at most
+        // the move of the point plus the largest move of a corner: out of reach, no test needed
+        // (a contact is never skipped, so the records are those of a full pass).
+        const int* corner = faces_.data() + 3 * f;
+        const double reach = list_scale_ * candidate_gap_[s] - moved_[i] -
+                             std::max({moved_[corner[0]], moved_[corner[1]], moved_[corner[2]]});
+        if (reach > kSkipMargin * delta_) {
+          record_of_[s] = -1;
+          continue;
+        }
         Eigen::Vector3d w;
         const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, candidate_images_[s], kStraddles, w);
         const double d2 = q.squaredNorm();

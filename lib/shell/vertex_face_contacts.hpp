@@ -92,7 +92,11 @@ class VertexFaceContacts final : public ShellContactTerm {
   double contact_distance() const { return delta_; }
   double contact_reach() const override { return delta_; }
 
+  // How many times the Verlet list of candidate triangles was built (a diagnostic).
+  long list_builds() const { return list_builds_; }
+
   static constexpr long kChunkVertices = 2048;
+  static constexpr int kBroadPhaseChunks = 16;  // chunks of cells of the list's broad phase
 
  private:
   struct Record {
@@ -119,11 +123,20 @@ class VertexFaceContacts final : public ShellContactTerm {
   static constexpr int kStraddles = 27;  // image code of a candidate whose corners lie in different images
   mutable std::vector<int> candidate_start_, candidates_;
   mutable std::vector<std::uint8_t> candidate_images_;  // per candidate: its periodic image seen from the vertex
+  mutable std::vector<double> candidate_gap_;  // per candidate: its distance from the vertex at the build
+  mutable std::vector<double> moved_;          // per vertex: its move from the (scaled) reference
+  // A candidate is tested only while its bounded distance is below this times delta (a hair
+  // above 1: round-off in the bound never skips a contact).
+  static constexpr double kSkipMargin = 1.0 + 1e-9;
   mutable std::vector<double> reference_;
   mutable double tolerated_move_ = 0;
+  mutable long list_builds_ = 0;
+  mutable double skin_ = 0, list_scale_ = 1;  // the list's skin, and the box's scale since it was built
+  double tolerated_move(double scale) const;  // the largest move of a vertex from the reference
   mutable bool list_valid_ = false;
   mutable std::vector<int> pairs_;     // vertex pairs (i, j): j's triangles are i's candidates
   mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
+  mutable std::vector<double> face_longest2_;  // per face: its longest edge, squared
   mutable std::vector<std::vector<Record>> records_;
   // Per candidate: the index of its record in its vertex's chunk of records_, or -1 (out of
   // contact at the last collect()).

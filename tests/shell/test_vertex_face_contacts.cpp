@@ -212,6 +212,58 @@ TEST_CASE("hertz-faces: contacts through the periodic faces of the box", "[shell
   CHECK_THROWS_AS(VertexFaceContacts(mesh, c), cmp::UsageError);
 }
 
+TEST_CASE("hertz-faces: a list kept through a box scaled on every side finds what a fresh one finds",
+          "[shell][faces]") {
+  // Eight 162-vertex shells in a row, each overlapping its neighbours, in a periodic box; the
+  // box is scaled and every shell moved rigidly with its centroid (a compression's affine
+  // step). A small scaling keeps the list (no new build) and gives the very bits of a term
+  // built afresh at the new box; a large one, or a box scaled unevenly, rebuilds it.
+  const auto a = fx::perturbed_icosphere(2, 0.01, 3);
+  cmp::mesh::TriMesh m;
+  const long nv = a.V.rows(), nf = a.F.rows();
+  m.V.resize(8 * nv, 3);
+  m.F.resize(8 * nf, 3);
+  for (int k = 0; k < 8; ++k) {
+    m.V.middleRows(k * nv, nv) = a.V.rowwise() + Eigen::RowVector3d(0.5 + 1.95 * k, 1.5 + 0.03 * k, 1.5);
+    m.F.middleRows(k * nf, nf) = a.F.array() + static_cast<int>(k * nv);
+  }
+  ContactParameters c = parameters(0.1);
+  Vector3d box(15.6, 3.0, 3.0);
+  c.box = box;
+  VertexFaceContacts kept(m, c);
+  std::vector<double> x = fx::state(m.V);
+  const auto affine = [&](double s) {
+    for (int k = 0; k < 8; ++k) {
+      Vector3d centroid = Vector3d::Zero();
+      for (long v = k * nv; v < (k + 1) * nv; ++v) centroid += Vector3d(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+      centroid /= static_cast<double>(nv);
+      for (long v = k * nv; v < (k + 1) * nv; ++v)
+        for (int d = 0; d < 3; ++d) x[3 * v + d] += (s - 1) * centroid[d];
+    }
+    box *= s;
+  };
+  REQUIRE(kept.energy(x) > 0);
+  const long first = kept.list_builds();
+  for (double s : {0.9995, 0.9995, 1.0004, 0.9990}) {
+    affine(s);
+    kept.set_box(box, {true, true, true});
+    c.box = box;
+    const VertexFaceContacts fresh(m, c);
+    INFO("scale " << s);
+    CHECK(kept.energy(x) == fresh.energy(x));
+    CHECK(gradient(kept, x) == gradient(fresh, x));
+    CHECK(kept.list_builds() == first);
+  }
+  affine(0.97);  // the shells' centroids close in by more than the skin allows
+  kept.set_box(box, {true, true, true});
+  c.box = box;
+  CHECK(gradient(kept, x) == gradient(VertexFaceContacts(m, c), x));
+  CHECK(kept.list_builds() == first + 1);
+  kept.set_box(Vector3d(box[0], box[1] * 1.0001, box[2]), {true, true, true});  // not one factor
+  kept.energy(x);
+  CHECK(kept.list_builds() == first + 2);
+}
+
 TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
   // Eight 642-vertex shells in a row along x, each overlapping the next two: 5136 vertices,
   // three fixed chunks.
