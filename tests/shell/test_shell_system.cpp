@@ -149,7 +149,7 @@ TEST_CASE("constant volume, projected: the volume held exactly, Pi the constrain
   CHECK(pi_projected == Approx(pi_accelerated).epsilon(0.03));
 }
 
-TEST_CASE("constant volume, projected: the reported Pi balances the force; fixed vertices stay", "[shell][system][volume]") {
+TEST_CASE("constant volume, projected: the reported Pi balances the force and fixed vertices stay", "[shell][system][volume]") {
   // A sphere with a few vertices held, its volume target 3 % up: the true force (turgor
   // included, at the Pi the run leaves) is within the tolerance everywhere, and the held
   // vertices have not moved.
