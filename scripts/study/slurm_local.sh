@@ -64,7 +64,7 @@ export SLURM_CONF="$conf"
 slurmctld
 slurmd
 for _ in $(seq 100); do
-  sinfo -h -o %T 2>/dev/null | grep -qx idle && { echo "export SLURM_CONF=$conf"; exit 0; }
+  sinfo -h -o %T 2>/dev/null | grep >/dev/null -x idle && { echo "export SLURM_CONF=$conf"; exit 0; }
   sleep 0.1
 done
 echo "slurm_local: the node did not come up in 10 s (logs: $dir/slurmctld.log, $dir/slurmd.log)" >&2

@@ -24,7 +24,7 @@ expect_error() {
   [ "$(grep -vc "^$cli_tool: run '.* --help' for the options\$" stderr.txt)" -eq 1 ] ||
     fail "$*: not one line on stderr: $(cat stderr.txt)"
   grep -q "^$cli_tool: .*$pattern" stderr.txt || fail "$*: stderr lacks '$pattern': $(cat stderr.txt)"
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "$*: left a file behind: $(ls -a)"
+  ! ls out.* .out.* 2>/dev/null | grep >/dev/null . || fail "$*: left a file behind: $(ls -a)"
 }
 
 # on_terminal OUT cmd...: runs cmd with stdin, stdout and stderr on a new pseudo-terminal

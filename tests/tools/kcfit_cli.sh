@@ -105,7 +105,7 @@ case_plot() {
   grep -q "^# kc_classical_C=" fit.csv || fail "classical KC not recorded"
   "$kcfit" "$thr" --model threshold --plot thr.png -q >/dev/null || fail "threshold plot"
   [ -s thr.png ] || fail "thr.png"
-  ! ls .*.tmp* 2>/dev/null | grep -q . || fail "temporary files left: $(ls -a)"
+  ! ls .*.tmp* 2>/dev/null | grep >/dev/null . || fail "temporary files left: $(ls -a)"
 }
 case_bad_input() {
   printf 'porosity,permeability\n0.2,1\n0.3,2\n' >in.csv
@@ -254,7 +254,7 @@ case_goodness() {
   "$kcfit" "$flow" --model kc-percolation --loss log -q >ls.csv || fail "ls"
   for k in r2 chi2_dof aic; do grep -q "^# $k=" ls.csv || fail "least squares lacks $k"; done
   grep -q "^# pseudo_r2=" ls.csv && fail "pseudo R^2 for least squares"
-  "$kcfit" "$perc" --model sigmoid 2>&1 >/dev/null | grep -q "McFadden pseudo-R^2 = 0\.[0-9]" || fail "summary lacks pseudo-R^2"
+  "$kcfit" "$perc" --model sigmoid 2>&1 >/dev/null | grep >/dev/null "McFadden pseudo-R^2 = 0\.[0-9]" || fail "summary lacks pseudo-R^2"
 }
 case_bad_options_at_once() {
   printf 'porosity,permeability\n0.2,1\n0.3,2\n' >in.csv
@@ -266,7 +266,7 @@ case_bad_options_at_once() {
   done
   grep -qx "kcfit: run 'kcfit --help' for the options" err.txt || fail "no --help hint: $(cat err.txt)"
   [ "$(wc -l <err.txt)" -eq 6 ] || fail "not one line per problem: $(cat err.txt)"
-  ! ls out.* x.txt .x.txt* 2>/dev/null | grep -q . || fail "left a file"
+  ! ls out.* x.txt .x.txt* 2>/dev/null | grep >/dev/null . || fail "left a file"
   expect_error 2 "--plot: the figure's format" "$kcfit" in.csv --model power --plot fit.txt -o out.csv
 }
 case_bad_numbers_at_once() {
@@ -285,11 +285,11 @@ case_bad_numbers_at_once() {
   [ "$(wc -l <err.txt)" -eq 7 ] || fail "not one line per problem: $(cat err.txt)"
   expect_error 2 "--max-iter: must lie in \[1, 1000000\], got '0'$" "$kcfit" in.csv --model power --max-iter 0 -o out.csv
   expect_error 2 "--model: required" "$kcfit" in.csv -o out.csv
-  ! ls -a | grep -q '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
+  ! ls -a | grep >/dev/null '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
 }
 case_plot_formats() {
   "$kcfit" "$perc" --model sigmoid --plot p.svg -q >/dev/null || fail "svg"
-  head -c 200 p.svg | grep -q "<svg\|<?xml" || fail "p.svg is not SVG"
+  head -c 200 p.svg | grep >/dev/null "<svg\|<?xml" || fail "p.svg is not SVG"
   grep -q "porosity" p.svg || fail "axis label missing in the SVG"
   grep -q "McFadden" p.svg || fail "the ML figure does not quote McFadden's pseudo-R^2"
   grep -q "R<tspan[^>]*>2" p.svg && ! grep -q "pseudo" p.svg && fail "an R^2"
@@ -300,7 +300,7 @@ case_plot_formats() {
   percolate_runs 10 >perc.csv
   "$kcfit" perc.csv --model sigmoid --group-by delta --plot groups.svg -q -o fits.csv || fail "grouped plot"
   [ "$(grep -c 'path stroke=' groups.svg)" -gt 5 ] || fail "grouped plot draws little"
-  ! ls -a | grep -q '\.tmp' || fail "temporary left: $(ls -a)"
+  ! ls -a | grep >/dev/null '\.tmp' || fail "temporary left: $(ls -a)"
 }
 # A stand-in gnuplot on PATH: answers the terminal probe, then runs $FAKE_GNUPLOT.
 fake_gnuplot() {
@@ -320,7 +320,7 @@ case_plot_interrupted() {
   local pid=$! t=0
   while [ ! -e gnuplot.started ] && [ $t -lt 100 ]; do sleep 0.05; t=$((t + 1)); done
   [ -e gnuplot.started ] || fail "gnuplot never started"
-  ! ls -a | grep -q '\.tmp' || fail "a temporary exists while gnuplot runs: $(ls -a)"
+  ! ls -a | grep >/dev/null '\.tmp' || fail "a temporary exists while gnuplot runs: $(ls -a)"
   kill -INT -- -"$pid"
   wait "$pid"; local status=$?
   set +m
@@ -332,7 +332,7 @@ case_plot_interrupted() {
   [ "$waited" = no ] || fail "kcfit waited for gnuplot after Ctrl-C"
   [ "$status" -eq 130 ] || fail "exit status $status after SIGINT (expected 130); stderr: $(cat err.txt)"
   grep -q "gnuplot failed" err.txt && fail "Ctrl-C reported as a gnuplot failure"
-  ! ls -a | grep -q '\.tmp\|fig.png\|out.csv' || fail "left behind: $(ls -a)"
+  ! ls -a | grep >/dev/null '\.tmp\|fig.png\|out.csv' || fail "left behind: $(ls -a)"
 }
 case_plot_gnuplot_killed() {
   fake_gnuplot 'kill -KILL $$'

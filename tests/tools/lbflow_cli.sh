@@ -44,8 +44,8 @@ PY
 close() { /usr/bin/python3 -c "import sys; a, b, t = map(float, sys.argv[1:]); sys.exit(0 if abs(a - b) <= t * abs(b) else 1)" "$@"; }
 
 case_help() {
-  "$lbflow" --help | grep -q -- "--refine" || fail "help lacks --refine"
-  "$lbflow" --help | grep -q -- "--checkpoint-every" || fail "help lacks --checkpoint-every"
+  "$lbflow" --help | grep >/dev/null -- "--refine" || fail "help lacks --refine"
+  "$lbflow" --help | grep >/dev/null -- "--checkpoint-every" || fail "help lacks --checkpoint-every"
   "$lbflow" --version | grep -Eq "^lbflow [0-9]" || fail "--version"
   "$lbflow" --list-models > models.txt || fail "--list-models"
   for m in mrt trt bgk; do grep -q "^collision,$m," models.txt || fail "--list-models lacks $m: $(cat models.txt)"; done
@@ -116,7 +116,7 @@ case_timings_only_on_request() {
 case_history() {
   cluster_vtk
   "$lbflow" c.vtk --refine 1 -q --history h.csv --check-every 50 > f.csv || fail "run"
-  head -n 20 h.csv | grep -q '^file,steps,permeability_lu,permeability_delta2,tortuosity,change,mach,mass$' || fail "header"
+  head -n 20 h.csv | grep >/dev/null '^file,steps,permeability_lu,permeability_delta2,tortuosity,change,mach,mass$' || fail "header"
   [ "$(grep -vc '^#' h.csv)" -eq $(( $(field f.csv steps) / 50 + 1 )) ] || fail "one row per check"
   [ "$(field h.csv steps)" = 50 ] || fail "first check"
   [ "$(tail -1 h.csv | cut -d, -f3)" = "$(field f.csv permeability_lu)" ] || fail "last check is the result"

@@ -27,9 +27,9 @@ make_shell_packing() {
 }
 
 case_help() {
-  "$percolate" --help | grep -q -- "--delta" || fail "help lacks --delta"
-  "$percolate" --help | grep -q -- "--periodic" || fail "help lacks --periodic"
-  "$percolate" sweep --help | grep -q -- "--bins" || fail "sweep help lacks --bins"
+  "$percolate" --help | grep >/dev/null -- "--delta" || fail "help lacks --delta"
+  "$percolate" --help | grep >/dev/null -- "--periodic" || fail "help lacks --periodic"
+  "$percolate" sweep --help | grep >/dev/null -- "--bins" || fail "sweep help lacks --bins"
   "$percolate" --version | grep -Eq "^percolate [0-9]" || fail "--version"
 }
 case_spheres_csv() {
@@ -60,8 +60,8 @@ case_scale_closes_the_channels() {
 case_vtk_cluster() {
   "$percolate" "$sc" --delta 0.1 --scale 1.2 -o cluster.vtk -q > p.csv || fail "run"
   [ "$(field p.csv percolates)" = 1 ] || fail "r = 0.48 should percolate"
-  head -10 cluster.vtk | grep -q "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"  # D0 = 1
-  head -2 cluster.vtk | grep -q "^percolating cluster along x of .*scale=1.2 delta=0.1 D0=1 (file) marking=spheres-overlap .*| percolate " || fail "title: $(head -2 cluster.vtk)"
+  head -10 cluster.vtk | grep >/dev/null "^SPACING 0.1 0.1 0.1" || fail "spacing: $(head -10 cluster.vtk)"  # D0 = 1
+  head -2 cluster.vtk | grep >/dev/null "^percolating cluster along x of .*scale=1.2 delta=0.1 D0=1 (file) marking=spheres-overlap .*| percolate " || fail "title: $(head -2 cluster.vtk)"
   /usr/bin/python3 - "$(field p.csv cluster_voxels)" <<'PY' || fail "VTK contents"
 import sys, numpy as np
 raw = open("cluster.vtk", "rb").read()
@@ -86,7 +86,7 @@ case_same_bytes() {
   # the provenance line (and the VTK title, which quotes it); no wall-clock columns.
   run() { "$percolate" "$sc" --delta 0.04,0.1 --scale 1.6 --threads "$1" -o "$2_{delta}.vtk" -q > "$2.csv" || fail "run $2"; }
   run 1 one; run 1 again; run 2 two
-  ! grep -v '^#' one.csv | head -1 | grep -q seconds || fail "timing columns: $(grep -v '^#' one.csv | head -1)"
+  ! grep -v '^#' one.csv | head -1 | grep >/dev/null seconds || fail "timing columns: $(grep -v '^#' one.csv | head -1)"
   for b in again two; do
     cmp -s <(grep -v '^# provenance=' one.csv) <(grep -v '^# provenance=' $b.csv) || fail "CSV differs: one vs $b"
     for d in 0.04 0.1; do
@@ -180,7 +180,7 @@ e=1-(4*math.pi*r**3/3-3*lens); p=float(sys.argv[1]); assert abs(p-e)<1e-12, (p,e
   [ "$(field o.csv porosity_exact)" = 0 ] || fail "exact for one sphere"
   grep -q "^percolate: warning: .*one.xyz at scale 1: 0 triples of spheres share a point, 9 spheres or pairs overlap through a periodic image" err.txt || fail "warning: $(cat err.txt)"
   /usr/bin/python3 -c "import sys; assert 0 <= float(sys.argv[1]) <= 1" "$(field o.csv porosity)" || fail "porosity $(field o.csv porosity)"
-  "$percolate" "$sc" --delta 0.1 --scale 1.8 2>&1 >/dev/null | grep -q "porosity -" && fail "summary prints a negative porosity"
+  "$percolate" "$sc" --delta 0.1 --scale 1.8 2>&1 >/dev/null | grep >/dev/null "porosity -" && fail "summary prints a negative porosity"
   true
 }
 case_summary_on_a_terminal() {
@@ -324,7 +324,7 @@ case_bad_options_all_at_once() {
   [ "$(cat err.txt)" = "percolate: --bins: 'abc' is not an integer
 percolate: run 'percolate sweep --help' for the options" ] || fail "sweep --bins abc: $(cat err.txt)"
   expect_error 2 "--bins: must be at least 1, got '0'$" "$percolate" sweep runs.csv --bins 0
-  ! ls -a | grep -q '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
+  ! ls -a | grep >/dev/null '^out\.\|\.tmp' || fail "left a file: $(ls -a)"
 }
 case_interrupt_sigint() {
   # Ctrl-C during one long run: no CSV temporary exists while the analysis runs (it appears

@@ -73,7 +73,7 @@ case_shellpack_jam_outputs() {
   [ ! -e f ] || fail "f written"
   refused_at_once shellpack "--csv: notadir/x.csv: cannot write" \
     "$shellpack" jam -N 12 --seeds 1:4 -o 'out_{seed}.xyz' --csv notadir/x.csv
-  ! ls out_* 2>/dev/null | grep -q . || fail "per-seed packings left behind: $(ls)"
+  ! ls out_* 2>/dev/null | grep >/dev/null . || fail "per-seed packings left behind: $(ls)"
   refused_at_once shellpack "--csv: out_{seed}.xyz is also the output of --packing" \
     "$shellpack" jam -N 12 --seeds 1:2 -o 'out_{seed}.xyz' --csv 'out_{seed}.xyz'
   refused_at_once shellpack "--packing: notadir/p_{seed}.xyz: cannot write" \

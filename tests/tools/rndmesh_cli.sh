@@ -11,12 +11,12 @@ enter_scratch_dir
 off_counts() { awk '!/^#/ && NF { if (++n == 2) { print $1, $2; exit } }' "$1"; }
 
 case_help() {
-  "$rndmesh" --help | grep -q "random" || fail "top-level help lacks subcommands"
-  "$rndmesh" random --help | grep -q -- "--tmin" || fail "random --help lacks --tmin"
-  "$rndmesh" random --help | grep -q "1000" || fail "random --help lacks the T_max default"
-  "$rndmesh" icosa --help | grep -q -- "--level" || fail "icosa --help lacks --level"
+  "$rndmesh" --help | grep >/dev/null "random" || fail "top-level help lacks subcommands"
+  "$rndmesh" random --help | grep >/dev/null -- "--tmin" || fail "random --help lacks --tmin"
+  "$rndmesh" random --help | grep >/dev/null "1000" || fail "random --help lacks the T_max default"
+  "$rndmesh" icosa --help | grep >/dev/null -- "--level" || fail "icosa --help lacks --level"
   "$rndmesh" --version | grep -Eq "^rndmesh [0-9]" || fail "--version"
-  "$rndmesh" --help-all | grep -q -- "--tmin" || fail "--help-all lacks the subcommands' options"
+  "$rndmesh" --help-all | grep >/dev/null -- "--tmin" || fail "--help-all lacks the subcommands' options"
 }
 case_icosa() {
   "$rndmesh" icosa --level 4 -o cell.off -q || fail "icosa failed"
@@ -57,14 +57,14 @@ case_random_stdout_and_trace() {
   "$rndmesh" random -n 50 --sweeps 2 --anneals 5 --trace trace.csv -q > mesh.off || fail "stdout"
   [ "$(off_counts mesh.off)" = "50 96" ] || fail "stdout counts"
   [ "$(grep -vc '^#' trace.csv)" = 6 ] || fail "trace rows: $(cat trace.csv)"
-  grep -v '^#' trace.csv | head -1 | grep -q "temperature_en" || fail "trace header"
+  grep -v '^#' trace.csv | head -1 | grep >/dev/null "temperature_en" || fail "trace header"
 }
 case_stats_csv() {
   "$rndmesh" octa --level 2 -o o.off -q
   "$rndmesh" stats o.off o.off > s.csv || fail "stats"
   grep -q "^file,vertices,faces" s.csv || fail "header: $(cat s.csv)"
   [ "$(grep -c '^o.off,18,32,48,2,1,1,0.57' s.csv)" = 2 ] || fail "rows: $(cat s.csv)"
-  cat o.off | "$rndmesh" stats - | grep -q "^-,18,32" || fail "stdin"
+  cat o.off | "$rndmesh" stats - | grep >/dev/null "^-,18,32" || fail "stdin"
 }
 case_meshio_reads_output() {
   # What MeshLab and ParaView would open: meshio (a real OFF reader) reads rndmesh's files,
@@ -133,12 +133,12 @@ rndmesh: --anneals: must be at least 1, got '0'
 rndmesh: --step: 'nan' is not a finite number
 rndmesh: run 'rndmesh random --help' for the options
 EOT
-  ! ls out.* .out.* 2>/dev/null | grep -q . || fail "left a file"
+  ! ls out.* .out.* 2>/dev/null | grep >/dev/null . || fail "left a file"
 }
 case_help_shows_types() {
   "$rndmesh" random --help | grep -Eq -- "-n,--points INT REQUIRED( |$)" || fail "$("$rndmesh" random --help | grep points)"
-  "$rndmesh" random --help | grep -q -- "--tmax FLOAT=1000" || fail "no --tmax default"
-  "$rndmesh" random --help | grep -q -- "--resume" || fail "no --resume"
+  "$rndmesh" random --help | grep >/dev/null -- "--tmax FLOAT=1000" || fail "no --tmax default"
+  "$rndmesh" random --help | grep >/dev/null -- "--resume" || fail "no --resume"
 }
 interrupted_case() {  # interrupted_case SIGNAL STATUS
   interrupt_run "$1" 1 "$rndmesh" random -n 40000 --seeds 1:2 --threads 2 -o 'out_{seed}.off' --trace 'out_{seed}.csv'

@@ -36,7 +36,7 @@ case_dphi_targets() {
     want=$(awk -v p="$phij" -v d="$d" 'BEGIN { printf "%.6f", p + d }')
     col compress.csv phi | awk -v w="$want" '($1 - w)^2 < 1e-20 { f = 1 } END { exit !f }' ||
       fail "no row at phi_J + $d = $want: $(col compress.csv phi | tr '\n' ' ')"
-    ls pack_*.off | grep -q . || fail "no packing written"
+    ls pack_*.off | grep >/dev/null . || fail "no packing written"
   done
   [ "$(ls pack_*.off | wc -l)" -eq 2 ] || fail "expected 2 packings: $(ls pack_*.off)"
   expect_error 2 "--dphi" "$shellpack" compress jammed.xyz --mesh cell.off --phi 0.7 --dphi 0.1 -o out.off
@@ -52,8 +52,8 @@ case_compress_to_0_6() {
   col compress.csv volume_error | awk '$1 > 1e-3 { exit 1 }' || fail "volume not held: $(col compress.csv volume_error)"
   # phi only grows; the targets are rows of their own, landed on exactly.
   col compress.csv phi | awk 'NR > 1 && $1 <= prev { exit 1 } { prev = $1 }' || fail "phi does not grow"
-  col compress.csv phi | grep -qx 0.5 || fail "no row at phi 0.5"
-  col compress.csv phi | grep -qx 0.6 || fail "no row at phi 0.6"
+  col compress.csv phi | grep >/dev/null -x 0.5 || fail "no row at phi 0.5"
+  col compress.csv phi | grep >/dev/null -x 0.6 || fail "no row at phi 0.6"
   for phi in 0.5 0.6; do
     f=pack_$phi.off
     [ -s "$f" ] || fail "$f not written"

@@ -40,7 +40,7 @@ case_help() {
     --ftol --list-models -o --csv --threads; do
     grep -q -- "$opt" help.txt || fail "--help lacks $opt"
   done
-  "$shellpack" bench-mechanics --help | grep -q "plates-contact" || fail "bench-mechanics --help"
+  "$shellpack" bench-mechanics --help | grep >/dev/null "plates-contact" || fail "bench-mechanics --help"
 }
 case_list_models() {
   "$shellpack" shell --list-models >models.csv || fail "--list-models"
@@ -57,7 +57,7 @@ case_inflate() {
   grep -q "^# units=" inflate.csv || fail "units line"
   [ "$(col inflate.csv stop | sort -u)" = converged ] || fail "not converged: $(col inflate.csv stop)"
   col inflate.csv volume_u3 | awk 'NR > 1 && $1 <= prev { exit 1 } { prev = $1 }' || fail "volume does not grow"
-  head -1 out.off | grep -q '^OFF' || fail "no OFF written"
+  head -1 out.off | grep >/dev/null '^OFF' || fail "no OFF written"
   grep -q "^# shellpack .*shell" out.off || fail "OFF lacks provenance"
   # The mesh out goes back in: inflating the inflated shell again by nothing changes nothing.
   run --mesh out.off --pressure 0 >again.csv || fail "rerun on the output"
@@ -103,7 +103,7 @@ case_bad_material() {
   "$shellpack" shell -E 0 -t -1 --mesh cell.off -o out.off >stdout.txt 2>stderr.txt; [ $? -eq 2 ] || fail "E 0 accepted"
   grep -q "^shellpack: --youngs-modulus: must be positive" stderr.txt || fail "E: $(cat stderr.txt)"
   grep -q "^shellpack: --thickness: must be positive" stderr.txt || fail "t: $(cat stderr.txt)"
-  ! ls out.* 2>/dev/null | grep -q . || fail "left output"
+  ! ls out.* 2>/dev/null | grep >/dev/null . || fail "left output"
   expect_error 2 "unknown stretching model 'fem'" run --mesh cell.off --model fem -o out.off
   expect_error 2 "--squeeze: needs --walls" run --mesh cell.off --squeeze 0.2 -o out.off
 }
