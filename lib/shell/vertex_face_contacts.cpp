@@ -102,7 +102,7 @@ struct Images {
 // The point q of the triangle `corners` closest to p, relative to p (q - p), and its weights.
 // The same operations in the list's build and in every evaluation: a contact the list keeps is
 // found with the same bits.
-inline Eigen::Vector3d closest_offset(const Images& images, const double* X, const int* corners, const double* p,
+[[gnu::always_inline]] inline Eigen::Vector3d closest_offset(const Images& images, const double* X, const int* corners, const double* p,
                                       int code, int straddles, Eigen::Vector3d& w) {
   Eigen::Vector3d corner[3];
   for (int k = 0; k < 3; ++k) images.relative(X + 3 * corners[k], p, code, straddles, corner[k].data());
@@ -151,9 +151,9 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   const double longest2 = *std::max_element(chunk_longest2.begin(), chunk_longest2.end());
   const double third = 1.0 / 3.0 + 1e-12;  // a hair more than 1/3: round-off never hides a triangle
   reach_.resize(static_cast<std::size_t>(n));
-  const int vertex_chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
-  for_each_chunk(vertex_chunks, parallel(), [&](int c) {
-    for (Eigen::Index v = chunk_begin(n, vertex_chunks, c), end = chunk_begin(n, vertex_chunks, c + 1); v < end; ++v) {
+  const int vchunks = vertex_chunks(n);
+  for_each_chunk(vchunks, parallel(), [&](int c) {
+    for (Eigen::Index v = chunk_begin(n, vchunks, c), end = chunk_begin(n, vchunks, c + 1); v < end; ++v) {
       double r = 0;
       for (int k = incident_start_[v]; k < incident_start_[v + 1]; ++k) r = std::max(r, face_longest2_[incident_[k]]);
       reach_[v] = delta_ + std::sqrt(r * third);
@@ -198,7 +198,7 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
   // 3 (n_y + 1) + 9 (n_z + 1) for a shift of n box sides, or kStraddles when the corners sit in
   // different images); kept only when the triangle is within delta + skin of x_i. Chunks are
   // joined in order: the same list on any thread count.
-  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  const int chunks = vertex_chunks(n);
   std::vector<std::vector<int>> kept(static_cast<std::size_t>(chunks));
   std::vector<std::vector<std::uint8_t>> kept_images(static_cast<std::size_t>(chunks));
   std::vector<std::vector<double>> kept_gaps(static_cast<std::size_t>(chunks));
@@ -254,25 +254,9 @@ void VertexFaceContacts::build_candidates(std::span<const double> x) const {
     candidate_images_.insert(candidate_images_.end(), kept_images[c].begin(), kept_images[c].end());
     candidate_gap_.insert(candidate_gap_.end(), kept_gaps[c].begin(), kept_gaps[c].end());
   }
-  // The gather's index (add_gradient on all threads only): per vertex, the candidates of other
-  // vertices whose triangle has it as a corner, in ascending candidate order (the order of a
-  // serial pass over the records).
-  const long total = static_cast<long>(candidates_.size());
-  record_of_.assign(static_cast<std::size_t>(total), -1);
-  gather_index_ = parallel();
-  if (gather_index_) {
-    corner_use_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-    for (long s = 0; s < total; ++s)
-      for (int k = 0; k < 3; ++k) ++corner_use_start_[faces_[3 * candidates_[s] + k] + 1];
-    for (Eigen::Index v = 0; v < n; ++v) corner_use_start_[v + 1] += corner_use_start_[v];
-    corner_uses_.resize(3 * static_cast<std::size_t>(total));
-    next.assign(corner_use_start_.begin(), corner_use_start_.end() - 1);
-    for (int c = 0; c < chunks; ++c)
-      for (long s = candidate_start_[chunk_begin(n, chunks, c)]; s < candidate_start_[chunk_begin(n, chunks, c + 1)]; ++s)
-        for (int k = 0; k < 3; ++k) corner_uses_[next[faces_[3 * candidates_[s] + k]]++] = {static_cast<int>(s), c, k};
-  }
   reference_.assign(x.begin(), x.end());
   moved_.assign(static_cast<std::size_t>(n), 0.0);
+  face_moved_.assign(faces_.size() / 3, 0.0);
   skin_ = skin;
   list_scale_ = 1.0;
   ++list_builds_;
@@ -285,7 +269,7 @@ bool VertexFaceContacts::candidates_hold(std::span<const double> x) const {
   // Every vertex's move from the reference (collect() bounds each candidate's distance by it),
   // per fixed chunk on all threads; the list holds while the largest is under the tolerance.
   const long n = static_cast<long>(x.size() / 3);
-  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  const int chunks = vertex_chunks(n);
   moved_.resize(static_cast<std::size_t>(n));
   std::vector<char> within(static_cast<std::size_t>(chunks), 1);
   for_each_chunk(chunks, parallel(), [&](int c) {
@@ -298,12 +282,20 @@ bool VertexFaceContacts::candidates_hold(std::span<const double> x) const {
     }
     within[c] = ok;
   });
-  return std::all_of(within.begin(), within.end(), [](char ok) { return ok != 0; });
+  if (!std::all_of(within.begin(), within.end(), [](char ok) { return ok != 0; })) return false;
+  // Each face's largest corner move: one load per candidate in collect() instead of four.
+  const long nf = static_cast<long>(faces_.size() / 3);
+  face_moved_.resize(static_cast<std::size_t>(nf));
+  for_each_chunk(chunks, parallel(), [&](int c) {
+    for (long f = chunk_begin(nf, chunks, c), end = chunk_begin(nf, chunks, c + 1); f < end; ++f)
+      face_moved_[f] = std::max({moved_[faces_[3 * f]], moved_[faces_[3 * f + 1]], moved_[faces_[3 * f + 2]]});
+  });
+  return true;
 }
 
 void VertexFaceContacts::collect(std::span<const double> x) const {
   const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
-  const int chunks = static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices));
+  const int chunks = vertex_chunks(n);
   records_.resize(static_cast<std::size_t>(chunks));
   for (auto& r : records_) r.clear();
   if (n == 0 || faces_.empty()) return;
@@ -321,21 +313,12 @@ void VertexFaceContacts::collect(std::span<const double> x) const {
         // times that in the scaled reference), and a distance to a triangle changes by at most
         // the move of the point plus the largest move of a corner: out of reach, no test needed
         // (a contact is never skipped, so the records are those of a full pass).
-        const int* corner = faces_.data() + 3 * f;
-        const double reach = list_scale_ * candidate_gap_[s] - moved_[i] -
-                             std::max({moved_[corner[0]], moved_[corner[1]], moved_[corner[2]]});
-        if (reach > kSkipMargin * delta_) {
-          record_of_[s] = -1;
-          continue;
-        }
+        const double reach = list_scale_ * candidate_gap_[s] - moved_[i] - face_moved_[f];
+        if (reach > kSkipMargin * delta_) continue;
         Eigen::Vector3d w;
         const Eigen::Vector3d q = closest_offset(images, X, faces_.data() + 3 * f, p, candidate_images_[s], kStraddles, w);
         const double d2 = q.squaredNorm();
-        if (!(d2 < delta2)) {
-          record_of_[s] = -1;
-          continue;
-        }
-        record_of_[s] = static_cast<int>(out.size());
+        if (!(d2 < delta2)) continue;
         out.push_back({static_cast<int>(i), f, {w[0], w[1], w[2]}, {-q[0], -q[1], -q[2]}, std::sqrt(d2)});
       }
     }
@@ -357,70 +340,45 @@ double VertexFaceContacts::energy(std::span<const double> x) const {
 void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<double> g) const {
   check_sizes(x, g);
   collect(x);
-  const Eigen::Index n = static_cast<Eigen::Index>(shell_of_.size());
   const int chunks = static_cast<int>(records_.size());
   double* G = g.data();
   // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
   const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(hertz_prefactor(estar_, rstar_), delta_ - r.r) / r.r : 0.0; };
-  if (!gather_index_ || omp_get_max_threads() == 1) {
-    // One thread (or a list built for one): the records in order, straight into g (s d on the vertex, -w_k s d on each
-    // corner of the triangle). The two passes below cost more than the scatter itself there
-    // (16 x 642 shells with faces to phi = 0.9, whose passes stay on one thread: 118-120 s with
-    // the earlier two-pass scatter, 94-106 s without; the same packing).
-    for (const std::vector<Record>& in : records_)
-      for (const Record& r : in) {
-        const double s = factor_of(r);
-        if (s == 0) continue;
-        const int* corner = faces_.data() + 3 * r.face;
-        for (int a = 0; a < 3; ++a) {
-          const double gp = s * r.d[a];
-          G[3 * r.i + a] += gp;
-          for (int m = 0; m < 3; ++m) G[3 * corner[m] + a] -= r.w[m] * gp;
-        }
-      }
+  // A record adds s d to its vertex and takes w_k s d from each corner k of its triangle with
+  // w_k > 0 (a corner of weight 0 gets nothing), in record order into `out`.
+  const auto scatter = [&](const std::vector<Record>& in, double* out) {
+    for (const Record& r : in) {
+      const double s = factor_of(r);
+      if (s == 0) continue;
+      const int* corner = faces_.data() + 3 * r.face;
+      for (int a = 0; a < 3; ++a) out[3 * r.i + a] += s * r.d[a];
+      for (int m = 0; m < 3; ++m)
+        if (r.w[m] > 0)
+          for (int a = 0; a < 3; ++a) out[3 * corner[m] + a] -= r.w[m] * (s * r.d[a]);
+    }
+  };
+  if (!parallel()) {
+    for (const std::vector<Record>& in : records_) scatter(in, G);
     return;
   }
-  // A record adds -U'(h) d/r to its vertex and takes w_k of that from each corner of its
-  // triangle, which may lie in any chunk. Pass 1, per chunk of records: each record's factor.
-  // Pass 2, per chunk of vertices: each vertex walks its own candidates and those whose
-  // triangle it is a corner of (the list's index), both in candidate order, and adds the terms
-  // of the ones in contact. Every entry of g gets its terms in the order of a serial pass over
-  // the records (records follow their candidates): the same bits on any thread count, and no
-  // two threads write one entry.
-  factors_.resize(static_cast<std::size_t>(chunks));
-  for_each_chunk(chunks, true, [&](int c) {
-    const std::vector<Record>& in = records_[static_cast<std::size_t>(c)];
-    std::vector<double>& factor = factors_[static_cast<std::size_t>(c)];
-    factor.resize(in.size());
-    for (std::size_t k = 0; k < in.size(); ++k) factor[k] = factor_of(in[k]);
+  // Large systems (whatever the thread count): the corners of a record's triangle may lie in
+  // any chunk, so the chunks of records are cut into kScatterSlabs slabs, each scattered in
+  // order into a gradient of its own on all threads; then every entry of g adds the slabs' in
+  // slab order (and clears them for the next call): the same bits on any thread count.
+  const std::size_t size = g.size();
+  if (slab_gradients_.size() != kScatterSlabs * size) slab_gradients_.assign(kScatterSlabs * size, 0.0);
+  for_each_chunk(kScatterSlabs, true, [&](int k) {
+    for (int c = static_cast<int>(chunk_begin(chunks, kScatterSlabs, k)); c < chunk_begin(chunks, kScatterSlabs, k + 1); ++c)
+      scatter(records_[static_cast<std::size_t>(c)], slab_gradients_.data() + k * size);
   });
-  for_each_chunk(chunks, true, [&](int t) {
-    const std::vector<Record>& own = records_[static_cast<std::size_t>(t)];
-    const std::vector<double>& own_factor = factors_[static_cast<std::size_t>(t)];
-    for (Eigen::Index v = chunk_begin(n, chunks, t), end = chunk_begin(n, chunks, t + 1); v < end; ++v) {
-      double* gv = G + 3 * v;
-      int s = candidate_start_[v];
-      const int s_end = candidate_start_[v + 1];
-      const CornerUse* u = corner_uses_.data() + corner_use_start_[v];
-      const CornerUse* u_end = corner_uses_.data() + corner_use_start_[v + 1];
-      while (s < s_end || u < u_end) {
-        if (u == u_end || (s < s_end && s < u->candidate)) {
-          // v pushed by a triangle of another shell: +s d.
-          if (const int k = record_of_[s]; k >= 0)
-            if (const double f = own_factor[k]; f != 0)
-              for (int a = 0; a < 3; ++a) gv[a] += f * own[k].d[a];
-          ++s;
-        } else {
-          // v a corner of the triangle pushing another vertex: -w s d.
-          if (const int k = record_of_[u->candidate]; k >= 0) {
-            const Record& r = records_[u->chunk][k];
-            if (const double f = factors_[u->chunk][k]; f != 0)
-              for (int a = 0; a < 3; ++a) gv[a] -= r.w[u->corner] * (f * r.d[a]);
-          }
-          ++u;
-        }
+  const int entry_chunks = chunks;
+  for_each_chunk(entry_chunks, true, [&](int c) {
+    for (auto e = chunk_begin(static_cast<std::ptrdiff_t>(size), entry_chunks, c); e < chunk_begin(static_cast<std::ptrdiff_t>(size), entry_chunks, c + 1); ++e)
+      for (int k = 0; k < kScatterSlabs; ++k) {
+        double& slab = slab_gradients_[k * size + static_cast<std::size_t>(e)];
+        G[e] += slab;
+        slab = 0;
       }
-    }
   });
 }
 

@@ -45,6 +45,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -116,15 +117,20 @@ class VertexFaceContacts final : public ShellContactTerm {
   void build_candidates(std::span<const double> x) const;
   bool candidates_hold(std::span<const double> x) const;
   bool parallel() const;
-  // The skin of the list, as a fraction of delta + (longest edge)/sqrt(3): thinner lists cost
-  // less per evaluation and are rebuilt more often. 16 x 642 shells compressed with faces from
-  // jamming to phi = 0.9 (2 threads): 0.06 101 s, 0.1 95 s, 0.15 101 s, 0.25 114 s.
-  static constexpr double kSkin = 0.12;
+  // The fixed chunks of kChunkVertices vertices (at least one) that every per-vertex pass uses.
+  static int vertex_chunks(long n) { return static_cast<int>(std::max<long>(1, (n + kChunkVertices - 1) / kChunkVertices)); }
+  // The skin of the list, as a fraction of delta + (longest edge)/sqrt(3): thicker lists are
+  // rebuilt less often, and their far candidates cost one bound each (collect() skips them).
+  // One step at phi 0.93 of 50 x 2,562 shells (2,255 FIRE iterations, 2 threads): 0.12 92 s,
+  // 0.2 81 s, 0.3 77 s, 0.45 86 s, 0.6 96 s; 16 x 642 shells (one thread's passes) the same
+  // at 0.12 and 0.3.
+  static constexpr double kSkin = 0.3;
   static constexpr int kStraddles = 27;  // image code of a candidate whose corners lie in different images
   mutable std::vector<int> candidate_start_, candidates_;
   mutable std::vector<std::uint8_t> candidate_images_;  // per candidate: its periodic image seen from the vertex
   mutable std::vector<double> candidate_gap_;  // per candidate: its distance from the vertex at the build
   mutable std::vector<double> moved_;          // per vertex: its move from the (scaled) reference
+  mutable std::vector<double> face_moved_;     // per face: the largest move of its corners
   // A candidate is tested only while its bounded distance is below this times delta (a hair
   // above 1: round-off in the bound never skips a contact).
   static constexpr double kSkipMargin = 1.0 + 1e-9;
@@ -138,20 +144,10 @@ class VertexFaceContacts final : public ShellContactTerm {
   mutable std::vector<double> reach_;  // per vertex: delta + (longest edge of its triangles)/sqrt(3)
   mutable std::vector<double> face_longest2_;  // per face: its longest edge, squared
   mutable std::vector<std::vector<Record>> records_;
-  // Per candidate: the index of its record in its vertex's chunk of records_, or -1 (out of
-  // contact at the last collect()).
-  mutable std::vector<int> record_of_;
-  // Per vertex, the candidates whose triangle has it as a corner (CSR, ascending candidate):
-  // add_gradient's gather, built with the list.
-  struct CornerUse {
-    int candidate;
-    int chunk;   // the chunk of records_ holding the candidate's record
-    int corner;  // 0, 1, 2: which corner of the triangle the vertex is
-  };
-  mutable bool gather_index_ = false;  // the index below was built with the list (parallel())
-  mutable std::vector<int> corner_use_start_;
-  mutable std::vector<CornerUse> corner_uses_;
-  mutable std::vector<std::vector<double>> factors_;  // per chunk of records: -U'(h)/r of each
+  // add_gradient of a large system: one gradient per slab of chunks of records (zero between
+  // calls).
+  static constexpr int kScatterSlabs = 4;
+  mutable std::vector<double> slab_gradients_;
 };
 
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,

@@ -254,7 +254,7 @@ TEST_CASE("hertz-faces: a list kept through a box scaled on every side finds wha
     CHECK(gradient(kept, x) == gradient(fresh, x));
     CHECK(kept.list_builds() == first);
   }
-  affine(0.97);  // the shells' centroids close in by more than the skin allows
+  affine(0.9);  // each vertex moves from its scaled place by more than the skin allows
   kept.set_box(box, {true, true, true});
   c.box = box;
   CHECK(gradient(kept, x) == gradient(VertexFaceContacts(m, c), x));
@@ -297,7 +297,8 @@ TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
     CHECK(e1 > 0);
     CHECK(e1 == e2);
     CHECK(g1 == g2);
-    // The scatter on all threads adds to each entry in the order of one pass over the contacts.
+    // The gradient is that of one pass over the contacts, up to the order of the sums (the
+    // records are scattered in fixed slabs, added entry by entry).
     std::vector<double> serial(x.size(), 0.0);
     for (const auto& t : k1) {
       if (!(t.r > 0)) continue;
@@ -308,7 +309,13 @@ TEST_CASE("hertz-faces: the same bits on 1 and 2 threads", "[shell][faces]") {
         for (int m = 0; m < 3; ++m) serial[3 * t.corners[m] + a] -= t.weights[m] * gp;
       }
     }
-    CHECK(g2 == serial);
+    double largest = 0, off = 0;
+    for (std::size_t e = 0; e < x.size(); ++e) {
+      largest = std::max(largest, std::abs(serial[e]));
+      off = std::max(off, std::abs(g2[e] - serial[e]));
+    }
+    CHECK(largest > 0);
+    CHECK(off <= 1e-13 * largest);
     REQUIRE(k1.size() == k2.size());
     for (std::size_t i = 0; i < k1.size(); ++i) CHECK((k1[i].i == k2[i].i && k1[i].corners == k2[i].corners && k1[i].r == k2[i].r));
   }
