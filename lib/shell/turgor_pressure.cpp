@@ -73,6 +73,12 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
   face_shell_ = shells.face_shell;
   turgor_.assign(static_cast<std::size_t>(std::max(shells.shell_count, 1)), p.turgor);
   scale_.assign(turgor_.size(), 0.0);
+  shell_face_start_.assign(turgor_.size() + 1, 0);
+  for (int s : face_shell_) ++shell_face_start_[s + 1];
+  for (std::size_t s = 0; s < turgor_.size(); ++s) shell_face_start_[s + 1] += shell_face_start_[s];
+  shell_faces_.resize(face_shell_.size());
+  std::vector<int> next_face(shell_face_start_.begin(), shell_face_start_.end() - 1);
+  for (std::size_t f = 0; f < face_shell_.size(); ++f) shell_faces_[next_face[face_shell_[f]]++] = static_cast<int>(f);
   target_ = volumes(std::span<const double>(rest.V.data(), rest.V.size()));
   build_rings(shells.face_shell);
   for (std::size_t s = 0; s < target_.size(); ++s)
@@ -83,11 +89,21 @@ TurgorPressure::TurgorPressure(const mesh::TriMesh& rest, const PressureParamete
 
 std::vector<double> TurgorPressure::volumes(std::span<const double> x) const {
   const double* X = x.data();
+  const int shells = static_cast<int>(turgor_.size());
   std::vector<double> v(turgor_.size(), 0.0);
-  const std::size_t nf = face_shell_.size();
-  for (std::size_t f = 0; f < nf; ++f)
-    v[face_shell_[f]] += triple(X + 3 * corners_[3 * f], X + 3 * corners_[3 * f + 1], X + 3 * corners_[3 * f + 2]);
-  for (double& s : v) s /= 6.0;
+  // Each shell's faces in face order, shells on all threads where the other mesh passes are:
+  // the same sums, so the same bits, on any thread count.
+  const int chunks = std::min(shells, 64);
+  for_each_chunk(chunks, ElementAssembly::runs_parallel(static_cast<long>(face_shell_.size())), [&](int c) {
+    for (auto s = chunk_begin(shells, chunks, c); s < chunk_begin(shells, chunks, c + 1); ++s) {
+      double sum = 0;
+      for (int k = shell_face_start_[s]; k < shell_face_start_[s + 1]; ++k) {
+        const int* f = corners_.data() + 3 * shell_faces_[k];
+        sum += triple(X + 3 * f[0], X + 3 * f[1], X + 3 * f[2]);
+      }
+      v[s] = sum / 6.0;
+    }
+  });
   return v;
 }
 

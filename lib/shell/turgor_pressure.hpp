@@ -72,6 +72,7 @@ class TurgorPressure final : public EnergyTerm {
   PressureControl control_;
   long vertex_count_;
   std::vector<int> corners_, face_shell_;
+  std::vector<int> shell_face_start_, shell_faces_;  // each shell's faces, ascending (CSR)
   // Vertex v's faces are ring_ pairs first_[v] .. first_[v + 1] (the other two corners, in
   // cyclic order), in face order; its shell is vertex_shell_[v].
   std::vector<int> first_, ring_, vertex_shell_;

@@ -345,40 +345,54 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   // dU/dp = -U'(h) d/r; 0 for p on the triangle (no direction; a set of measure zero).
   const auto factor_of = [&](const Record& r) { return r.r > 0 ? -hertz_force(hertz_prefactor(estar_, rstar_), delta_ - r.r) / r.r : 0.0; };
   // A record adds s d to its vertex and takes w_k s d from each corner k of its triangle with
-  // w_k > 0 (a corner of weight 0 gets nothing), in record order into `out`.
-  const auto scatter = [&](const std::vector<Record>& in, double* out) {
+  // w_k > 0 (a corner of weight 0 gets nothing), in record order into `out`; `touched` (if
+  // given) flags the blocks of kChunkVertices vertices written.
+  const auto scatter = [&](const std::vector<Record>& in, double* out, char* touched) {
     for (const Record& r : in) {
       const double s = factor_of(r);
       if (s == 0) continue;
       const int* corner = faces_.data() + 3 * r.face;
       for (int a = 0; a < 3; ++a) out[3 * r.i + a] += s * r.d[a];
+      if (touched) touched[r.i / kChunkVertices] = 1;
       for (int m = 0; m < 3; ++m)
-        if (r.w[m] > 0)
+        if (r.w[m] > 0) {
           for (int a = 0; a < 3; ++a) out[3 * corner[m] + a] -= r.w[m] * (s * r.d[a]);
+          if (touched) touched[corner[m] / kChunkVertices] = 1;
+        }
     }
   };
   if (!parallel()) {
-    for (const std::vector<Record>& in : records_) scatter(in, G);
+    for (const std::vector<Record>& in : records_) scatter(in, G, nullptr);
     return;
   }
   // Large systems (whatever the thread count): the corners of a record's triangle may lie in
   // any chunk, so the chunks of records are cut into kScatterSlabs slabs, each scattered in
-  // order into a gradient of its own on all threads; then every entry of g adds the slabs' in
-  // slab order (and clears them for the next call): the same bits on any thread count.
+  // order into a gradient of its own on all threads; then every entry of g adds the slabs
+  // that wrote its block, in slab order, and clears them for the next call: the same bits on
+  // any thread count.
   const std::size_t size = g.size();
-  if (slab_gradients_.size() != kScatterSlabs * size) slab_gradients_.assign(kScatterSlabs * size, 0.0);
+  const long blocks = (static_cast<long>(size / 3) + kChunkVertices - 1) / kChunkVertices;
+  if (slab_gradients_.size() != kScatterSlabs * size) {
+    slab_gradients_.assign(kScatterSlabs * size, 0.0);
+    slab_touched_.assign(static_cast<std::size_t>(kScatterSlabs * blocks), 0);
+  }
   for_each_chunk(kScatterSlabs, true, [&](int k) {
     for (int c = static_cast<int>(chunk_begin(chunks, kScatterSlabs, k)); c < chunk_begin(chunks, kScatterSlabs, k + 1); ++c)
-      scatter(records_[static_cast<std::size_t>(c)], slab_gradients_.data() + k * size);
+      scatter(records_[static_cast<std::size_t>(c)], slab_gradients_.data() + k * size, slab_touched_.data() + k * blocks);
   });
-  const int entry_chunks = chunks;
-  for_each_chunk(entry_chunks, true, [&](int c) {
-    for (auto e = chunk_begin(static_cast<std::ptrdiff_t>(size), entry_chunks, c); e < chunk_begin(static_cast<std::ptrdiff_t>(size), entry_chunks, c + 1); ++e)
-      for (int k = 0; k < kScatterSlabs; ++k) {
-        double& slab = slab_gradients_[k * size + static_cast<std::size_t>(e)];
-        G[e] += slab;
-        slab = 0;
+  for_each_chunk(static_cast<int>(blocks), true, [&](int b) {
+    const std::size_t begin = 3 * static_cast<std::size_t>(b) * kChunkVertices,
+                      end = std::min(size, 3 * static_cast<std::size_t>(b + 1) * kChunkVertices);
+    for (int k = 0; k < kScatterSlabs; ++k) {
+      char& touched = slab_touched_[static_cast<std::size_t>(k * blocks + b)];
+      if (!touched) continue;
+      double* slab = slab_gradients_.data() + k * size;
+      for (std::size_t e = begin; e < end; ++e) {
+        G[e] += slab[e];
+        slab[e] = 0;
       }
+      touched = 0;
+    }
   });
 }
 

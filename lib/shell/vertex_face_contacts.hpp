@@ -148,6 +148,7 @@ class VertexFaceContacts final : public ShellContactTerm {
   // calls).
   static constexpr int kScatterSlabs = 4;
   mutable std::vector<double> slab_gradients_;
+  mutable std::vector<char> slab_touched_;  // per slab, per block of kChunkVertices vertices: written
 };
 
 inline Eigen::Vector3d closest_triangle_weights(const Eigen::Vector3d& p, const Eigen::Vector3d& a,

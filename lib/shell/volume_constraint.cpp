@@ -27,8 +27,19 @@ void VolumeConstraint::per_shell_dot(const Eigen::VectorXd& a, const Eigen::Vect
   for_each_chunk(chunks_, parallel_, [&](int c) {
     std::vector<double>& sum = partial_[static_cast<std::size_t>(c)];
     sum.assign(norm2_.size(), 0.0);
-    for (long v = chunk_begin(n, chunks_, c), end = chunk_begin(n, chunks_, c + 1); v < end; ++v)
-      sum[shell[v]] += a[3 * v] * b[3 * v] + a[3 * v + 1] * b[3 * v + 1] + a[3 * v + 2] * b[3 * v + 2];
+    // A shell's vertices mostly follow each other: its running sum stays in a register until
+    // the shell changes (the same additions in the same order).
+    int current = -1;
+    double running = 0;
+    for (long v = chunk_begin(n, chunks_, c), end = chunk_begin(n, chunks_, c + 1); v < end; ++v) {
+      if (shell[v] != current) {
+        if (current >= 0) sum[current] = running;
+        current = shell[v];
+        running = sum[current];
+      }
+      running += a[3 * v] * b[3 * v] + a[3 * v + 1] * b[3 * v + 1] + a[3 * v + 2] * b[3 * v + 2];
+    }
+    if (current >= 0) sum[current] = running;
   });
   out.assign(norm2_.size(), 0.0);
   for (const std::vector<double>& sum : partial_)
