@@ -353,11 +353,11 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
       if (s == 0) continue;
       const int* corner = faces_.data() + 3 * r.face;
       for (int a = 0; a < 3; ++a) out[3 * r.i + a] += s * r.d[a];
-      if (touched) touched[r.i / kChunkVertices] = 1;
+      if (touched && !touched[r.i / kChunkVertices]) touched[r.i / kChunkVertices] = 1;
       for (int m = 0; m < 3; ++m)
         if (r.w[m] > 0) {
           for (int a = 0; a < 3; ++a) out[3 * corner[m] + a] -= r.w[m] * (s * r.d[a]);
-          if (touched) touched[corner[m] / kChunkVertices] = 1;
+          if (touched && !touched[corner[m] / kChunkVertices]) touched[corner[m] / kChunkVertices] = 1;
         }
     }
   };
@@ -372,19 +372,22 @@ void VertexFaceContacts::add_gradient(std::span<const double> x, std::span<doubl
   // any thread count.
   const std::size_t size = g.size();
   const long blocks = (static_cast<long>(size / 3) + kChunkVertices - 1) / kChunkVertices;
+  // Each slab's flags on cache lines of their own: two threads writing one line would pass it
+  // back and forth at every contact.
+  const long stride = (blocks + 127) / 64 * 64;  // at least 64 bytes between slabs
   if (slab_gradients_.size() != kScatterSlabs * size) {
     slab_gradients_.assign(kScatterSlabs * size, 0.0);
-    slab_touched_.assign(static_cast<std::size_t>(kScatterSlabs * blocks), 0);
+    slab_touched_.assign(static_cast<std::size_t>(kScatterSlabs * stride + 64), 0);
   }
   for_each_chunk(kScatterSlabs, true, [&](int k) {
     for (int c = static_cast<int>(chunk_begin(chunks, kScatterSlabs, k)); c < chunk_begin(chunks, kScatterSlabs, k + 1); ++c)
-      scatter(records_[static_cast<std::size_t>(c)], slab_gradients_.data() + k * size, slab_touched_.data() + k * blocks);
+      scatter(records_[static_cast<std::size_t>(c)], slab_gradients_.data() + k * size, slab_touched_.data() + 64 + k * stride);
   });
   for_each_chunk(static_cast<int>(blocks), true, [&](int b) {
     const std::size_t begin = 3 * static_cast<std::size_t>(b) * kChunkVertices,
                       end = std::min(size, 3 * static_cast<std::size_t>(b + 1) * kChunkVertices);
     for (int k = 0; k < kScatterSlabs; ++k) {
-      char& touched = slab_touched_[static_cast<std::size_t>(k * blocks + b)];
+      char& touched = slab_touched_[static_cast<std::size_t>(64 + k * stride + b)];
       if (!touched) continue;
       double* slab = slab_gradients_.data() + k * size;
       for (std::size_t e = begin; e < end; ++e) {

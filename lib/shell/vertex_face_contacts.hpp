@@ -35,8 +35,8 @@
 // the vertices' bounding box, or, once set_box() gave one, [0, L) with the minimum image along
 // its periodic axes: the interface of ShellContactTerm, as VertexContacts, so a packing run can
 // take either style. Vertices are handled in fixed chunks on all threads; energies are summed
-// per chunk in chunk order, and the forces scattered per chunk of vertices, each entry taking
-// its terms in record order: the same bits for any thread count.
+// per chunk in chunk order, and the forces of a large system scattered in fixed slabs of
+// chunks, one gradient each, added in slab order: the same bits for any thread count.
 #include "shell/energy_term.hpp"
 #include "shell/hertz_contacts.hpp"
 #include "shell/shell_parameters.hpp"
