@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <omp.h>
 #include <string>
 
 namespace cmp::shell {
