@@ -46,12 +46,13 @@ void VolumeConstraint::per_shell_dot(const Eigen::VectorXd& a, const Eigen::Vect
     for (std::size_t s = 0; s < out.size(); ++s) out[s] += sum[s];
 }
 
-void VolumeConstraint::add_along_normals(const std::vector<double>& coefficient, Eigen::VectorXd& y) const {
+void VolumeConstraint::add_along_normals(const std::vector<double>& coefficient, Eigen::VectorXd& y,
+                                         double sign) const {
   const std::vector<int>& shell = pressure_.vertex_shells();
   const long n = static_cast<long>(shell.size());
   for_each_chunk(chunks_, parallel_, [&](int c) {
     for (long v = chunk_begin(n, chunks_, c), end = chunk_begin(n, chunks_, c + 1); v < end; ++v) {
-      const double k = coefficient[shell[v]];
+      const double k = sign * coefficient[shell[v]];
       for (int a = 0; a < 3; ++a) y[3 * v + a] += k * n_[3 * v + a];
     }
   });
@@ -68,9 +69,8 @@ void VolumeConstraint::gradients(const Eigen::VectorXd& x) {
 
 void VolumeConstraint::remove_normal(Eigen::VectorXd& y, std::vector<double>& coefficient) const {
   per_shell_dot(y, n_, coefficient);
-  for (std::size_t s = 0; s < coefficient.size(); ++s) coefficient[s] = norm2_[s] > 0 ? -coefficient[s] / norm2_[s] : 0.0;
-  add_along_normals(coefficient, y);
-  for (double& c : coefficient) c = -c;
+  for (std::size_t s = 0; s < coefficient.size(); ++s) coefficient[s] = norm2_[s] > 0 ? coefficient[s] / norm2_[s] : 0.0;
+  add_along_normals(coefficient, y, -1.0);
 }
 
 void VolumeConstraint::project(Eigen::VectorXd& x, Eigen::VectorXd& v) {

@@ -47,7 +47,8 @@ class VolumeConstraint {
   // Per shell: sum over its free vertices of a_i . b_i (3 doubles each).
   void per_shell_dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b, std::vector<double>& out) const;
   void remove_normal(Eigen::VectorXd& y, std::vector<double>& coefficient) const;  // y -= c_s n_s, c_s = y.n_s/|n_s|^2
-  void add_along_normals(const std::vector<double>& coefficient, Eigen::VectorXd& y) const;  // y += c_s n_s
+  // y += sign c_s n_s (sign -1: the same bits as adding -c_s)
+  void add_along_normals(const std::vector<double>& coefficient, Eigen::VectorXd& y, double sign = 1.0) const;
 
   static constexpr long kChunkVertices = 4096;
 
