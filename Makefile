@@ -126,7 +126,7 @@ run: deps configure
 # STUDY_DIR (out/study, out/study-<STUDY>) and its report.html. -j runs tasks in parallel.
 # (study_tools: rndmesh shellpack percolate lbflow kcfit, CMakeLists.txt)
 STUDY_MAKE = $(MAKE) -f scripts/study/study.mk --no-print-directory BUILD=$(BUILD) OUT=$(OUT)
-.PHONY: study study-report study-docs study-jobs study-tools test-slurm
+.PHONY: study study-report study-docs study-jobs study-status study-tools test-slurm
 study-tools: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target study_tools >&2
 study: study-tools
@@ -137,6 +137,10 @@ study-report: study-tools
 # The report, summary and figures copied into docs/study (docs/study-<STUDY>), for a commit.
 study-docs:
 	@$(STUDY_MAKE) docs
+# How far a campaign is: per stage, the targets finished of all, their seconds and the time
+# left at their mean (CSV); builds and runs nothing.
+study-status:
+	@$(STUDY_MAKE) status
 # One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel
 # or a Slurm job array; run the stages in that order, each after the one before has finished.
 # (Standard output holds the commands only: the build above reports on standard error.)

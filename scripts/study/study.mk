@@ -66,7 +66,7 @@ $(call stamp,jam,'JAM_OPTS=$(JAM_OPTS)')
 .DELETE_ON_ERROR:
 .SECONDARY:
 .SECONDEXPANSION:
-.PHONY: all structure flow report docs jobs tools scripts
+.PHONY: all structure flow report docs jobs tools scripts status
 
 all:
 	@scripts/study/check_tools.sh '$(RUN)'
@@ -131,7 +131,7 @@ run_of   = $(word 1,$(subst /, ,$(1)))
 delta_of = $(patsubst d%,%,$(word 2,$(subst /, ,$(1))))
 
 # The second pass: one lbflow row per percolating cluster at FLOW_DELTA, for FLOW_N and FLOW_SEEDS.
-ifneq ($(filter flow stage-flow $(D)/report.html,$(MAKECMDGOALS)),)
+ifneq ($(filter flow stage-flow status $(D)/report.html,$(MAKECMDGOALS)),)
 FLOW_ROWS := $(foreach r,$(flow_runs),$(foreach m,$(REFINE_LIST),$(foreach p,$(shell scripts/study/percolating.sh \
   $(D)/perc/$(r)/d$(FLOW_DELTA) $(PHI_LIST)),$(D)/flow/$(r)/M$(m)/$(p).csv)))
 endif
@@ -169,6 +169,23 @@ docs:
 	@rm -rf $(DOCS_DIR) && mkdir -p $(DOCS_DIR)/figures
 	cp $(D)/report.html $(D)/summary.md $(DOCS_DIR)/
 	cp $(D)/figures/*.png $(DOCS_DIR)/figures/
+
+# How far the campaign is (make study-status): per stage, its finished targets of all, the
+# seconds they took, their mean and the time left at that mean, as CSV. The flow's targets are
+# known only as far as percolate has run; a line on standard error says so while it has not.
+status_targets_mesh      = $(MESH)
+status_targets_jam       = $(foreach r,$(runs),$(D)/jam/$(r).xyz)
+status_targets_compress  = $(COMPRESSIONS)
+status_targets_analyze   = $(ANALYSES)
+status_targets_percolate = $(PERC_ROWS)
+status_targets_flow      = $(FLOW_ROWS)
+status:
+	@echo "stage,done,total,seconds,mean_seconds,seconds_left"
+	@$(foreach s,mesh jam compress analyze percolate flow,scripts/study/stage_status.sh $(s) \
+	  $(words $(wildcard $(status_targets_$(s)))) $(words $(status_targets_$(s))) $(D)/log/$(s).csv;)
+	@$(if $(filter-out $(words $(PERC_ROWS)),$(words $(wildcard $(PERC_ROWS)))),echo "study: flow: \
+	  the total counts the clusters found by the $(words $(wildcard $(PERC_ROWS))) of $(words $(PERC_ROWS)) \
+	  percolate rows made so far" >&2)
 
 # One stage's commands, one a line, for GNU parallel or a job array (make study-jobs STAGE=...):
 # the recipes of the stage's unfinished targets, printed instead of run. A stage's jobs need the

@@ -2,7 +2,8 @@
 # The study campaign (scripts/study/study.mk) at its tiny size, as `make study` runs it: the
 # hand-offs between the stages (compress -> percolate -> lbflow -> kcfit), a campaign killed
 # half-way and run again, the variables checked before any work, a failed step retried, the
-# jobs printed for GNU parallel, and a report that refuses results of another version.
+# jobs printed for GNU parallel with make study-status before and after, and a report that
+# refuses results of another version.
 #   bash study.sh --list | CASE     (needs CMP_BIN, CMP_SRC)
 set -uo pipefail
 cases="handoffs parallel_through_top_makefile kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused missing_tools_named"
@@ -142,6 +143,14 @@ case_jobs_for_parallel() {
   command -v parallel >/dev/null || fail "GNU parallel is not installed (make deps installs it)"
   campaign "$tmp/st" jobs STAGE=compress >"$tmp/out" 2>&1 && fail "compress jobs before the jams"
   grep -q "STAGE=compress needs stage jam finished first" "$tmp/out" || fail "$(cat "$tmp/out")"
+  # make study-status before any work: every target to do, no time yet, the flow's total unknown
+  campaign "$tmp/st" status >"$tmp/status" 2>"$tmp/err" || fail "status: $(cat "$tmp/err")"
+  for want in "stage,done,total,seconds,mean_seconds,seconds_left" "jam,0,2,0,," "compress,0,2,0,," \
+      "percolate,0,8,0,," "flow,0,0,0,,"; do
+    grep -qx "$want" "$tmp/status" || fail "status: no row '$want': $(cat "$tmp/status")"
+  done
+  grep -q "study: flow: the total counts the clusters found by the 0 of 8 percolate rows" "$tmp/err" ||
+    fail "status: no word on the flow's unknown total: $(cat "$tmp/err")"
   for stage in jam compress analyze percolate flow; do
     campaign "$tmp/st" jobs STAGE=$stage >"$tmp/$stage.txt" 2>"$tmp/err" || fail "jobs $stage: $(cat "$tmp/err")"
     [ -s "$tmp/$stage.txt" ] || fail "no $stage jobs"
@@ -153,6 +162,20 @@ case_jobs_for_parallel() {
   campaign "$tmp/st" all >"$tmp/out" 2>&1 || fail "report after parallel: $(tail -5 "$tmp/out")"
   [ "$(wc -l <"$tmp/st/log/recipes.log")" = "$before" ] || fail "make redid what parallel had done: $(tail -n +$((before + 1)) "$tmp/st/log/recipes.log")"
   [ -s "$tmp/st/report.html" ] || fail "no report"
+  # and when all is done: every stage finished, its seconds those of timed.sh's log, nothing left
+  campaign "$tmp/st" status >"$tmp/status" 2>"$tmp/err" || fail "status: $(cat "$tmp/err")"
+  [ -s "$tmp/err" ] && fail "status of a finished campaign: $(cat "$tmp/err")"
+  /usr/bin/python3 - "$tmp/status" "$tmp/st/log" <<'PY' || fail "status at the end: $(cat "$tmp/status")"
+import csv, sys
+rows = {r["stage"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert list(rows) == ["mesh", "jam", "compress", "analyze", "percolate", "flow"], list(rows)
+for stage, r in rows.items():
+    assert int(r["done"]) == int(r["total"]) > 0, r
+    last = {l.split(",")[1]: float(l.split(",")[2]) for l in open(f"{sys.argv[2]}/{stage}.csv")}
+    assert abs(float(r["seconds"]) - sum(last.values())) < 0.1, (r, last)
+    assert r["seconds_left"] == "0", r
+assert int(rows["compress"]["total"]) == 2 and int(rows["percolate"]["total"]) == 8, rows
+PY
 }
 
 case_mixed_versions_refused() {
