@@ -171,18 +171,27 @@ docs:
 	cp $(D)/figures/*.png $(DOCS_DIR)/figures/
 
 # How far the campaign is (make study-status): per stage, its finished targets of all, the
-# seconds they took, their mean and the time left at that mean, as CSV. The flow's targets are
-# known only as far as percolate has run; a line on standard error says so while it has not.
+# seconds they took, their mean and the time left (stage_status.sh: the targets still to do
+# counted per N, and per M for the flow), as CSV. The flow's targets are known only as far as
+# percolate has run; a line on standard error says so while it has not.
 status_targets_mesh      = $(MESH)
 status_targets_jam       = $(foreach r,$(runs),$(D)/jam/$(r).xyz)
 status_targets_compress  = $(COMPRESSIONS)
 status_targets_analyze   = $(ANALYSES)
 status_targets_percolate = $(PERC_ROWS)
 status_targets_flow      = $(FLOW_ROWS)
+to_do     = $(filter-out $(wildcard $(1)),$(1))
+with_text = $(foreach t,$(1),$(if $(findstring $(2),$(t)),$(t)))
+# N,M:COUNT of the targets still to do
+status_left_mesh = 0,0:$(words $(call to_do,$(MESH)))
+status_left = $(foreach n,$(N_LIST),$(n),0:$(words $(call with_text,$(call to_do,$(status_targets_$(1))),/N$(n)_s)))
+status_left_flow = $(foreach n,$(FLOW_N_LIST),$(foreach m,$(REFINE_LIST),$(n),$(m):$(words \
+  $(call with_text,$(call with_text,$(call to_do,$(FLOW_ROWS)),/N$(n)_s),/M$(m)/))))
 status:
 	@echo "stage,done,total,seconds,mean_seconds,seconds_left"
 	@$(foreach s,mesh jam compress analyze percolate flow,scripts/study/stage_status.sh $(s) \
-	  $(words $(wildcard $(status_targets_$(s)))) $(words $(status_targets_$(s))) $(D)/log/$(s).csv;)
+	  $(words $(wildcard $(status_targets_$(s)))) $(words $(status_targets_$(s))) $(D)/log/$(s).csv \
+	  $(or $(status_left_$(s)),$(call status_left,$(s)));)
 	@$(if $(filter-out $(words $(PERC_ROWS)),$(words $(wildcard $(PERC_ROWS)))),echo "study: flow: \
 	  the total counts the clusters found by the $(words $(wildcard $(PERC_ROWS))) of $(words $(PERC_ROWS)) \
 	  percolate rows made so far" >&2)

@@ -6,7 +6,7 @@
 # refuses results of another version.
 #   bash study.sh --list | CASE     (needs CMP_BIN, CMP_SRC)
 set -uo pipefail
-cases="handoffs parallel_through_top_makefile kill_and_resume bad_variables failed_step_retried jobs_for_parallel mixed_versions_refused missing_tools_named"
+cases="handoffs parallel_through_top_makefile kill_and_resume bad_variables failed_step_retried jobs_for_parallel status_time_left mixed_versions_refused missing_tools_named"
 if [[ ${1:-} == --list ]]; then printf '%s\n' $cases; exit 0; fi
 case=${1:?CASE}
 bin=${CMP_BIN:?set CMP_BIN}
@@ -176,6 +176,24 @@ for stage, r in rows.items():
     assert r["seconds_left"] == "0", r
 assert int(rows["compress"]["total"]) == 2 and int(rows["percolate"]["total"]) == 8, rows
 PY
+}
+
+case_status_time_left() {
+  # make study-status's time left (stage_status.sh): a target still to do counts at the mean of
+  # the finished ones of its N (and M), else at their seconds per shell times its N (of its M),
+  # else at the mean of all; the last run of a target is the one that counts
+  local st=$src/scripts/study/stage_status.sh
+  printf '%s\n' compress,/N1_x/compress/N10_s1/compress.csv,100 compress,/N1_x/compress/N10_s1/compress.csv,90 \
+    compress,/N1_x/compress/N10_s2/compress.csv,110 >"$tmp/compress.csv"
+  # 2 of N = 10 at 100 s and 1 of N = 20 at 10 s a shell: 400 s
+  [ "$("$st" compress 2 5 "$tmp/compress.csv" 10,0:2 20,0:1)" = "compress,2,5,200.0,100.0,400" ] ||
+    fail "compress: $("$st" compress 2 5 "$tmp/compress.csv" 10,0:2 20,0:1)"
+  printf '%s\n' flow,/d/flow/N10_s1/M1/0.8.csv,10 flow,/d/flow/N10_s1/M2/0.8.csv,80 >"$tmp/flow.csv"
+  # N = 10 at M = 1: 10 s; N = 20 at M = 2: 8 s a shell, 160 s; M = 3, never run: the mean, 45 s
+  [ "$("$st" flow 2 5 "$tmp/flow.csv" 10,1:1 20,2:1 10,3:1)" = "flow,2,5,90.0,45.0,215" ] ||
+    fail "flow: $("$st" flow 2 5 "$tmp/flow.csv" 10,1:1 20,2:1 10,3:1)"
+  # nothing finished: no time, no guess
+  [ "$("$st" flow 0 2 "$tmp/none.csv" 10,1:2)" = "flow,0,2,0,," ] || fail "nothing done: $("$st" flow 0 2 "$tmp/none.csv" 10,1:2)"
 }
 
 case_mixed_versions_refused() {
