@@ -58,6 +58,11 @@ define stamp
 $(shell mkdir -p $(D)/params; f=$(D)/params/$(1).txt; printf '%s\n' $(2) > $$f.new; \
   if cmp -s $$f.new $$f; then rm $$f.new; else mv $$f.new $$f; fi)
 endef
+# make study-status only reads: asked with other variables than the campaign's, a stamp it wrote
+# would mark the campaign's finished targets out of date.
+ifeq ($(MAKECMDGOALS),status)
+  stamp :=
+endif
 $(call stamp,compress,'VERTICES=$(VERTICES)' 'COMPRESS_OPTS=$(COMPRESS_OPTS)' 'PHI=$(PHI_LIST)')
 $(call stamp,percolate,'PERCOLATE_OPTS=$(PERCOLATE_OPTS)' 'FLOW_DELTA=$(FLOW_DELTA)')
 $(call stamp,flow,'LBFLOW_OPTS=$(LBFLOW_OPTS)')

@@ -194,6 +194,11 @@ case_status_time_left() {
     fail "flow: $("$st" flow 2 5 "$tmp/flow.csv" 10,1:1 20,2:1 10,3:1)"
   # nothing finished: no time, no guess
   [ "$("$st" flow 0 2 "$tmp/none.csv" 10,1:2)" = "flow,0,2,0,," ] || fail "nothing done: $("$st" flow 0 2 "$tmp/none.csv" 10,1:2)"
+  # and make study-status writes nothing, not even the parameters' stamps
+  campaign "$tmp/fresh" status >"$tmp/status" 2>"$tmp/err" || fail "status: $(cat "$tmp/err")"
+  grep -qx "compress,0,2,0,," "$tmp/status" || fail "status of a fresh campaign: $(cat "$tmp/status")"
+  [ -e "$tmp/fresh" ] && fail "make study-status wrote into the campaign: $(ls -R "$tmp/fresh")"
+  return 0
 }
 
 case_mixed_versions_refused() {
