@@ -138,7 +138,7 @@ study-report: study-tools
 study-docs:
 	@$(STUDY_MAKE) docs
 # How far a campaign is: per stage, the targets finished of all, their seconds and the time
-# left at their mean (CSV); builds and runs nothing.
+# left (CSV; scripts/study/stage_status.sh); builds, runs and writes nothing.
 study-status:
 	@$(STUDY_MAKE) status
 # One stage's commands (STAGE=jam|compress|analyze|percolate|flow), one a line, for GNU parallel

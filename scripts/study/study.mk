@@ -48,6 +48,7 @@ endif
 runs      := $(foreach n,$(N_LIST),$(foreach s,$(SEED_LIST),N$(n)_s$(s)))
 flow_runs := $(foreach n,$(FLOW_N_LIST),$(foreach s,$(FLOW_SEED_LIST),N$(n)_s$(s)))
 MESH      := $(D)/mesh/cell_$(VERTICES).off
+JAMS      := $(foreach r,$(runs),$(D)/jam/$(r).xyz)
 COMPRESSIONS := $(foreach r,$(runs),$(D)/compress/$(r)/compress.csv)
 ANALYSES  := $(foreach r,$(runs),$(D)/analyze/$(r).csv)
 PERC_ROWS := $(foreach r,$(runs),$(foreach d,$(DELTA_LIST),$(foreach p,$(PHI_LIST),$(D)/perc/$(r)/d$(d)/$(p).csv)))
@@ -180,7 +181,7 @@ docs:
 # counted per N, and per M for the flow), as CSV. The flow's targets are known only as far as
 # percolate has run; a line on standard error says so while it has not.
 status_targets_mesh      = $(MESH)
-status_targets_jam       = $(foreach r,$(runs),$(D)/jam/$(r).xyz)
+status_targets_jam       = $(JAMS)
 status_targets_compress  = $(COMPRESSIONS)
 status_targets_analyze   = $(ANALYSES)
 status_targets_percolate = $(PERC_ROWS)
@@ -211,7 +212,7 @@ stage_before_analyze := compress
 stage_before_percolate := compress
 stage_before_flow := percolate
 .PHONY: $(addprefix stage-,$(STAGES))
-stage-jam: $(MESH) $(foreach r,$(runs),$(D)/jam/$(r).xyz)
+stage-jam: $(MESH) $(JAMS)
 stage-compress: $(COMPRESSIONS)
 stage-analyze: $(ANALYSES)
 stage-percolate: $(PERC_ROWS)
