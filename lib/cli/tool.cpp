@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -56,7 +57,19 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
 }
 
 void apply_threads(const CommonOptions& common) {
-  if (common.threads > 0) omp_set_num_threads(common.threads);
+  if (common.threads > 0) omp_set_num_threads(std::min(common.threads, max_threads()));
+}
+
+int max_threads() {
+  const long per_cores = static_cast<long>(kThreadsPerCore) * std::max(1, omp_get_num_procs());
+  return static_cast<int>(std::max(1L, std::min<long>(per_cores, omp_get_thread_limit())));
+}
+
+std::string max_threads_reason() {
+  const int procs = std::max(1, omp_get_num_procs());
+  const long per_cores = static_cast<long>(kThreadsPerCore) * procs;
+  if (omp_get_thread_limit() < per_cores) return fmt::format("OpenMP's thread limit, OMP_THREAD_LIMIT={}", omp_get_thread_limit());
+  return fmt::format("{} per core of this machine's {}", kThreadsPerCore, procs);
 }
 
 bool Bounds::contains(double x) const {
@@ -66,12 +79,14 @@ bool Bounds::contains(double x) const {
 std::string Bounds::describe() const {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
   const auto num = [](double x) { return io::format_number(x); };
+  std::string text;
   if (has_lo && has_hi)
-    return fmt::format("must lie in {}{}, {}{}", lo_open ? "(" : "[", num(lo), num(hi), hi_open ? ")" : "]");
-  if (has_lo && lo == 0) return lo_open ? "must be positive" : "must not be negative";
-  if (has_lo) return lo_open ? "must exceed " + num(lo) : "must be at least " + num(lo);
-  if (has_hi) return hi_open ? "must be below " + num(hi) : "must be at most " + num(hi);
-  return "";
+    text = fmt::format("must lie in {}{}, {}{}", lo_open ? "(" : "[", num(lo), num(hi), hi_open ? ")" : "]");
+  else if (has_lo && lo == 0) text = lo_open ? "must be positive" : "must not be negative";
+  else if (has_lo) text = lo_open ? "must exceed " + num(lo) : "must be at least " + num(lo);
+  else if (has_hi) text = hi_open ? "must be below " + num(hi) : "must be at most " + num(hi);
+  if (!text.empty() && !reason.empty()) text += " (" + reason + ")";
+  return text;
 }
 
 namespace {
@@ -166,8 +181,10 @@ void Tool::add_common(CLI::App& where, CommonOptions& common, unsigned which) {
   if (which & kSeed)
     add_uint64(where, "--seed", common.seed, "seed of the random number generator; same seed, same output");
   if (which & kThreads)
-    add_int(where, "--threads", common.threads, "OpenMP threads (0: all cores); results do not depend on it",
-            non_negative());
+    add_int(where, "--threads", common.threads,
+            fmt::format("OpenMP threads (0: all cores; at most {} per core); results do not depend on it",
+                        kThreadsPerCore),
+            closed(0, max_threads()).because(max_threads_reason()));
   if (which & kQuiet) where.add_flag("-q,--quiet", common.quiet, "no progress bar or summary on stderr");
 }
 

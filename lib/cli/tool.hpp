@@ -60,22 +60,39 @@ struct CommonOptions {
 // Sets the OpenMP thread count from common.threads (0 leaves the default: all cores).
 void apply_threads(const CommonOptions& common);
 
+// The most threads --threads accepts: kThreadsPerCore times the cores OpenMP sees, and never
+// more than OpenMP's thread limit (OMP_THREAD_LIMIT). libgomp crashes (or fails "Thread
+// creation failed") long before the thread counts an int can hold, so every program refuses
+// more, before any work: "--threads: must lie in [0, 128] (64 per core of this machine's 2),
+// got '100000'". max_threads_reason() is the parenthesis.
+inline constexpr int kThreadsPerCore = 64;
+int max_threads();
+std::string max_threads_reason();
+
 // The range a number option must lie in; lo/hi_open exclude the bound. Said in messages as
 // "must be positive", "must be at least 4", "must lie in [1, 14]", "must lie in (0, 1)".
+// reason, when given, says where a bound comes from; describe() adds it in parentheses:
+// "must lie in [0, 128] (64 per core of this machine's 2)".
 struct Bounds {
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
   bool lo_open = false, hi_open = false;
+  std::string reason;
   bool contains(double x) const;
   std::string describe() const;  // "must be positive", ...; "" when unbounded
+  Bounds because(std::string why) const {
+    Bounds b = *this;
+    b.reason = std::move(why);
+    return b;
+  }
 };
 inline Bounds any_value() { return {}; }
-inline Bounds positive() { return {0, std::numeric_limits<double>::infinity(), true, false}; }
-inline Bounds non_negative() { return {0, std::numeric_limits<double>::infinity(), false, false}; }
-inline Bounds at_least(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, false}; }
-inline Bounds closed(double lo, double hi) { return {lo, hi, false, false}; }
-inline Bounds open(double lo, double hi) { return {lo, hi, true, true}; }
-inline Bounds left_open(double lo, double hi) { return {lo, hi, true, false}; }   // (lo, hi]
-inline Bounds right_open(double lo, double hi) { return {lo, hi, false, true}; }  // [lo, hi)
+inline Bounds positive() { return {0, std::numeric_limits<double>::infinity(), true, false, {}}; }
+inline Bounds non_negative() { return {0, std::numeric_limits<double>::infinity(), false, false, {}}; }
+inline Bounds at_least(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, false, {}}; }
+inline Bounds closed(double lo, double hi) { return {lo, hi, false, false, {}}; }
+inline Bounds open(double lo, double hi) { return {lo, hi, true, true, {}}; }
+inline Bounds left_open(double lo, double hi) { return {lo, hi, true, false, {}}; }   // (lo, hi]
+inline Bounds right_open(double lo, double hi) { return {lo, hi, false, true, {}}; }  // [lo, hi)
 
 // The --seed/--seeds/--resume trio of tools that make one result per seed.
 struct SeedOptions {

@@ -277,7 +277,7 @@ case_bad_numbers_at_once() {
     -o out.csv 2>err.txt
   [ $? -eq 2 ] || fail "exit status"
   for p in "--bootstrap: must lie in \[0, 10000000\], got '-3'" "--max-iter: 'abc' is not an integer" \
-    "--seed: 'x' is not a non-negative integer" "--threads: must not be negative, got '-1'" \
+    "--seed: 'x' is not a non-negative integer" "--threads: must lie in \[0, [0-9]*\] (64 per core of this machine's [0-9]*), got '-1'" \
     "--model: unknown model 'kozeny' (known: .*)" "--sigma: weights the linear loss only, not --loss log" \
     "run 'kcfit --help' for the options"; do
     grep -qx -- "kcfit: $p" err.txt || fail "lacks '$p': $(cat err.txt)"

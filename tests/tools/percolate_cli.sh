@@ -312,7 +312,7 @@ case_bad_options_all_at_once() {
     --sphere-marking middle -o out.vtk --csv out.csv 2>err.txt
   [ $? -eq 2 ] || fail "exit status"
   for p in "--delta: must be positive, got '-1'" "--scale: 'abc' is not a finite number" \
-    "--connectivity: must be 6, 18 or 26, got '7'" "--threads: must not be negative, got '-2'" \
+    "--connectivity: must be 6, 18 or 26, got '7'" "--threads: must lie in [0, $((64 * $(nproc)))] (64 per core of this machine's $(nproc)), got '-2'" \
     "--d0: 'x' is not a finite number" "--thickness: must not be negative, got '-0.5'" \
     "--sphere-marking: must be 'overlap' or 'centre', got 'middle'" "run 'percolate --help' for the options"; do
     grep -qxF -- "percolate: $p" err.txt || fail "lacks '$p': $(cat err.txt)"
