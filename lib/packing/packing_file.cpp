@@ -1,6 +1,7 @@
 #include "packing/packing_file.hpp"
 
 #include "core/errors.hpp"
+#include "io/csv.hpp"
 #include "io/input.hpp"
 #include "io/line_reader.hpp"
 #include "io/off.hpp"
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <queue>
 
 namespace cmp::packing {
@@ -93,6 +95,23 @@ Packing spheres_packing(io::SpherePackingFrame&& f, double scale) {
 
 }  // namespace
 
+double max_scale(const Packing& p) {
+  if (p.kind != Packing::Kind::Spheres || p.radii.size() == 0) return std::numeric_limits<double>::infinity();
+  const double largest = p.radii.maxCoeff() / p.scale;
+  return largest > 0 ? 0.5 * p.box.norm() / largest : std::numeric_limits<double>::infinity();
+}
+
+void check_scale(const Packing& p, double scale, const std::string& scale_text) {
+  if (scale <= 1) return;  // the file's own spheres, or smaller ones
+  const double bound = max_scale(p);
+  if (scale <= bound) return;
+  const double largest = p.radii.maxCoeff() / p.scale;
+  throw UsageError(fmt::format("--scale {}: the largest sphere's radius would be {:.4g}, more than half the box's "
+                               "diagonal {:.4g} (the sphere covers the whole box, and the work grows as the cube of "
+                               "the scale): at most {:.4g} for {}",
+                               scale_text, largest * scale, 0.5 * p.box.norm(), bound, p.file));
+}
+
 std::vector<Packing> read_packings(io::Input& input, const PackingReadOptions& options) {
   std::vector<Packing> packings;
   switch (input.format()) {
@@ -100,8 +119,12 @@ std::vector<Packing> read_packings(io::Input& input, const PackingReadOptions& o
       packings.push_back(read_shells(input));
       break;
     case io::InputFormat::xyz:
-      for (auto& f : io::read_sphere_packing_xyz(input, io::PbcRule::as_in_file))
-        packings.push_back(spheres_packing(std::move(f), options.scale));
+      for (auto& f : io::read_sphere_packing_xyz(input, io::PbcRule::as_in_file)) {
+        packings.push_back(spheres_packing(std::move(f), 1.0));
+        check_scale(packings.back(), options.scale, io::format_number(options.scale));
+        packings.back().radii *= options.scale;
+        packings.back().scale = options.scale;
+      }
       break;
     default:
       input.fail_format("a packing: an OFF ('OFF' first) or an extended XYZ (an atom count first)");

@@ -46,8 +46,20 @@ struct Packing {
   int particles() const { return kind == Kind::Shells ? static_cast<int>(shell_offsets.size()) - 1 : static_cast<int>(centres.rows()); }
 };
 
+// The largest radius factor (--scale) that a sphere packing's spheres can take and still mean
+// something: the largest sphere's radius at most half the box's diagonal. Beyond it that
+// sphere covers every point of the box (no point of a periodic box is farther from a centre),
+// so every larger scale gives the same porosity 0, while the work of marking it grows as the
+// cube of the scale (minutes at 1e3, out of memory at 1e18, nonsense from overflow at 1e20,
+// porosities of 1e90 in lbflow). p as read (radii already scaled by p.scale).
+double max_scale(const Packing& p);
+// Throws cmp::UsageError("--scale 1e3: the largest sphere's radius would be 400, more than
+// half the box's diagonal 3.464 (...): at most 8.66 for j.xyz") when scale (> 1) exceeds
+// max_scale(p); scale_text as typed. A scale of at most 1 is never refused.
+void check_scale(const Packing& p, double scale, const std::string& scale_text);
+
 struct PackingReadOptions {
-  double scale = 1;  // spheres: radii are multiplied by it (> 0)
+  double scale = 1;  // spheres: radii are multiplied by it (> 0, at most max_scale: UsageError)
   double d0 = 0;     // > 0: D_0 given by the user, overriding the file
 };
 

@@ -40,6 +40,8 @@ void check_percolate_plan(const std::vector<packing::Packing>& packings, const P
         if (plan.scales[s] != 1)
           throw UsageError(fmt::format("{}: --scale {} applies to sphere packings (extended XYZ) only; this is a "
                                        "packing of shells", p.file, plan.scale_names[s]));
+    if (p.kind == packing::Packing::Kind::Spheres)
+      for (std::size_t s = 0; s < plan.scales.size(); ++s) packing::check_scale(p, plan.scales[s], plan.scale_names[s]);
     for (std::size_t k = 0; k < plan.deltas.size(); ++k)
       if (plan.deltas[k] * p.d0 > p.box.minCoeff())
         throw UsageError(fmt::format("{}: --delta {} is larger than the box (smallest side {} = {:.4g} D0, D0 = {} from {})",

@@ -48,4 +48,19 @@ case_threads_beyond_the_machine_refused() {
     "$rndmesh" random -n 20 -o out.off --threads 4
 }
 
+# --- item 1: --scale whose spheres are larger than the box ---
+case_scale_beyond_the_box_refused() {
+  # 1e3 ran for minutes, 1e18 ended in std::bad_alloc (134), 1e20-1e100 wrote porosity 0.9999.
+  for s in 1e3 1e18 1e20 1e100; do
+    bounded percolate 2 "--scale $s: the largest sphere's radius would be .*, more than half the box's diagonal 3.464 (the sphere covers the whole box.*): at most 8.66 for .*simple_cubic_4x4x4.xyz" \
+      "$percolate" "$sc" --delta 0.1 --scale "$s" --csv out.csv
+  done
+  bounded percolate 2 "--scale 8.7: " "$percolate" "$sc" --delta 0.1 --scale 1,8.7 --csv out.csv
+  # lbflow's exact walls read the packing through the same reader: 1e30 wrote a porosity of 3.99e90.
+  bounded lbflow 2 "--scale 1e+30: the largest sphere's radius would be" "$lbflow" "$sc" --delta 0.25 --scale 1e30 -o out.csv
+  # The bound itself is a valid run: every voxel solid.
+  "$percolate" "$sc" --delta 0.5 --scale 8.66 -q >p.csv 2>/dev/null || fail "scale 8.66"
+  [ "$(col p.csv porosity_voxels)" = 0 ] || fail "not solid: $(cat p.csv)"
+}
+
 run_cases "$@"
