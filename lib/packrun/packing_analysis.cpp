@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/minimum_image.hpp"
 #include "shell/voronoi_faces.hpp"
+#include "io/csv.hpp"
 #include "packing/shell_volumes.hpp"
 
 #include <fmt/format.h>
@@ -29,7 +30,8 @@ spheres::SpherePacking centres_as_spheres(const PackingAnalysis& a) {
 }
 
 void check_distinct_centres(const packing::ShellPackingFile& p, const PackingAnalysis& a) {
-  const double tol = 1e-9 * a.d0;
+  // The file's own unit, not --d0: a D0 of 1e308 made every pair of shells "duplicated".
+  const double tol = 1e-9 * p.d0;
   for (std::size_t i = 0; i < a.shapes.size(); ++i)
     for (std::size_t j = i + 1; j < a.shapes.size(); ++j) {
       Eigen::Vector3d d = a.shapes[i].centre - a.shapes[j].centre;
@@ -47,6 +49,10 @@ PackingAnalysis analyze_packing(const packing::ShellPackingFile& p, const Analyz
   a.file = p.file;
   a.particles = p.shells();
   a.box = p.box;
+  // D0 is the unit of g(r), about a shell's diameter: one larger than the box measures nothing.
+  if (o.d0 && !(*o.d0 <= p.box.maxCoeff()))
+    throw UsageError(fmt::format("--d0 {}: larger than the box of {} (largest side {}): D0 is about a shell's "
+                                 "diameter", io::format_number(*o.d0), p.file, io::format_number(p.box.maxCoeff())));
   a.d0 = o.d0 ? *o.d0 : p.d0;
   a.d0_source = o.d0 ? "option" : p.d0_source;
   const auto& k = p.keys;

@@ -63,4 +63,23 @@ case_scale_beyond_the_box_refused() {
   [ "$(col p.csv porosity_voxels)" = 0 ] || fail "not solid: $(cat p.csv)"
 }
 
+# --- item 1: steps an option implies, and messages that blame the option ---
+case_jam2d_steps_bounded_before_any_work() {
+  # both ran without end
+  bounded jam2d 2 "--mobility: 1e+12 with --time 0.2 implies .* time steps of .* (the integrator's stability limit / (20 mobility)): more than 1e+10; lower --time or --mobility" \
+    "$jam2d" chamber --time 0.2 --mobility 1e12 --csv out.csv
+  bounded jam2d 2 "--dt: 1e-12 with --time 200 implies 2e+14 time steps" "$jam2d" chamber --time 200 --dt 1e-12 --csv out.csv
+  bounded jam2d 2 "--dt0: must lie in (0, 0.1\] (a step grows each cell by dt_0 gamma_0 of its size), got '1e308'" \
+    "$jam2d" grow --box 4 --dt0 1e308 -o out.xyz
+}
+case_shell_pressure_and_analyze_d0_name_the_option() {
+  "$rndmesh" icosa --level 2 -o cell.off -q || fail "rndmesh"
+  # said "FIRE: mass must be positive"
+  bounded shellpack 2 "--pressure: must be at most Young's modulus E = 1 in magnitude .*, got '1e+308'" \
+    "$shellpack" shell --mesh cell.off --pressure 1e308 -o out.off
+  # said "shells 0 and 1 have the same centre (a duplicated shell)"
+  bounded shellpack 2 "--d0 1e+308: larger than the box of .*octahedron_packing.off" \
+    "$shellpack" analyze "$src/tests/data/io/octahedron_packing.off" --d0 1e308 -o out.csv
+}
+
 run_cases "$@"

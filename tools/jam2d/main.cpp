@@ -12,7 +12,10 @@
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "core/registry.hpp"
+#include "io/csv.hpp"
 
+
+#include <fmt/format.h>
 
 #include <iostream>
 
@@ -37,11 +40,17 @@ struct Options {
   AvalancheJob avalanches;
 };
 
+constexpr double kMaxGrowthStep = 0.1;   // --dt0 [1/gamma0]
+constexpr double kMaxChamberSteps = 1e10;  // time steps a chamber run may take (days of CPU)
+
 void add_growth_options(cli::Tool& tool, CLI::App& sub, Options& o) {
   tool.add_double(sub, "--box", o.growth.box, "side L of the periodic square box [sigma]", cli::positive());
   sub.add_option("--contact", o.contact, "contact law between lobes: " + style_names(contact_laws()) + " (--list-models)")
       ->capture_default_str();
-  tool.add_double(sub, "--dt0", o.growth.dt0, "growth step dt_0 [1/gamma0]", cli::positive());
+  // A step grows each cell by dt_0 gamma_0 of its size: beyond 0.1 a step is a good part of a
+  // generation, and far above it (--dt0 1e308) a run went on without end.
+  tool.add_double(sub, "--dt0", o.growth.dt0, "growth step dt_0 [1/gamma0]",
+                  cli::left_open(0, kMaxGrowthStep).because("a step grows each cell by dt_0 gamma_0 of its size"));
   sub.add_flag("--fixed-step", o.fixed_step, "no adaptive step beyond jamming (thesis Fig. S3.5)");
   sub.add_flag("--double-step", o.double_step,
                "after an accepted step double dt (up to dt_0) instead of the thesis's reset to dt_0: the same "
@@ -171,7 +180,19 @@ int main(int argc, char** argv) {
     if (chamber->parsed()) {
       ChamberJob& j = o.chamber;
       tool.collect("--P0", [&] { j.parameters.P0 = parse_feedback(o.P0_text); });
-      for (const auto& [flag, message] : j.parameters.problems()) tool.check(false, flag, message);
+      const auto problems = j.parameters.problems();
+      for (const auto& [flag, message] : problems) tool.check(false, flag, message);
+      // The number of steps the options imply: --mobility 1e12 ran without end.
+      if (problems.empty()) {
+        const double dt = j.parameters.time_step(), steps = j.duration / dt;
+        tool.check(steps <= kMaxChamberSteps, j.parameters.dt > 0 ? "--dt" : "--mobility",
+                   fmt::format("{} with --time {} implies {:.3g} time steps of {:.3g}{}: more than {:g}; lower "
+                               "--time{}",
+                               fmt::format("{:g}", j.parameters.dt > 0 ? j.parameters.dt : j.parameters.mobility),
+                               io::format_number(j.duration), steps, dt,
+                               j.parameters.dt > 0 ? "" : " (the integrator's stability limit / (20 mobility))",
+                               kMaxChamberSteps, j.parameters.dt > 0 ? " or raise --dt" : " or --mobility"));
+      }
       tool.check(j.sample_every <= j.duration, "--every", "must not exceed --time");
       tool.check(j.duration / j.sample_every <= 1e8, "--every", "more than 1e8 rows: choose a larger --every");
       const int to_stdout = (j.csv == "-") + (j.trajectory == "-");

@@ -1,7 +1,9 @@
 #include "shell_command.hpp"
 
+#include "io/csv.hpp"
 #include "shell/styles.hpp"
 
+#include <cmath>
 #include <iostream>
 
 namespace cmp::shellpack {
@@ -60,6 +62,13 @@ void ShellCommand::check(cli::Tool& tool) {
   m.contact.poisson_ratio = m.material.poisson_ratio;
   if (wall_gap_ > 0) job_.run.wall_gap = wall_gap_;
   tool.check(job_.run.squeeze == 0 || job_.run.wall_gap.has_value(), "--squeeze", "needs --walls");
+  // A turgor of the order of E strains the wall by Pi R / (2 E t), R/t times more than any
+  // elastic law holds; 1e308 overflowed the stiffness estimate ("FIRE: mass must be positive").
+  const double E = m.material.youngs_modulus;
+  tool.check(!(E > 0) || std::abs(job_.run.pressure) <= E, "--pressure",
+             "must be at most Young's modulus E = " + io::format_number(E) +
+                 " in magnitude (the wall's strain Pi R / (2 E t) would exceed R / (2 t)), got '" +
+                 io::format_number(job_.run.pressure) + "'");
   tool.check(!(job_.mesh_output == "-" && job_.csv == "-"), "--csv",
              "the mesh already goes to stdout (-o -): write the CSV to a file");
 }
