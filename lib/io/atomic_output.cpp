@@ -208,6 +208,31 @@ void commit_in_order(std::initializer_list<AtomicOutput*> outputs) {
   throw with_note(*first, "the other outputs were written: " + written);
 }
 
+void SecondaryOutputs::attempt(const std::function<void()>& write) {
+  try {
+    write();
+  } catch (const InputError& e) {
+    ++failures_;
+    if (!first_) first_ = std::make_unique<InputError>(e);
+  }
+}
+
+void SecondaryOutputs::commit_then_throw(std::initializer_list<AtomicOutput*> tables) {
+  commit_in_order(tables);  // a table that cannot be written is the first thing to say
+  if (!first_) return;
+  std::string written;
+  long count = 0;
+  for (const auto* t : tables)
+    if (t) written += (count++ ? ", " : "") + (t->path() == "-" ? std::string("<stdout>") : t->path());
+  std::string note;
+  if (count > 0) note = (count == 1 ? "the table was written: " : "the tables were written: ") + written;
+  if (failures_ > 1)
+    note += (note.empty() ? "" : "; ") + std::to_string(failures_ - 1) +
+            (failures_ == 2 ? " more output failed" : " more outputs failed");
+  if (note.empty()) throw *first_;
+  throw with_note(*first_, note);
+}
+
 InputError with_note(const InputError& e, const std::string& note) {
   // The message without its "file:line: " prefix, which the new error adds again.
   const std::string located = e.what();

@@ -6,6 +6,7 @@
 // run can remove them from a signal handler (cli::run_tool installs one for SIGINT and
 // SIGTERM). Other temporaries a tool makes (a folder for gnuplot's output, a scratch file)
 // join the registry through TemporaryPath.
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <ostream>
@@ -57,6 +58,31 @@ class AtomicOutput {
 void commit_in_order(std::initializer_list<AtomicOutput*> outputs);
 // The error e with " (note)" added to its message, same file and line.
 cmp::InputError with_note(const cmp::InputError& e, const std::string& note);
+
+// Outputs written whole during the work (a VTK per run, a packing per target), whose failure
+// must not throw away the table the work is building (docs/conventions.md, "The result
+// first"): each write goes through attempt(), which keeps the first cmp::InputError instead of
+// letting it end the run; after the work, commit_then_throw() commits the tables and only then
+// throws that failure, "/dev/full: write error: No space left on device (the table was
+// written: pf.csv)". (lbflow's flow_batch does the same by hand.)
+//   io::SecondaryOutputs secondary;
+//   for (...) { ...; table.row(...); secondary.attempt([&] { io::write_vtk(name, image, title); }); }
+//   secondary.commit_then_throw({&table_out});
+class SecondaryOutputs {
+ public:
+  // Runs write; an InputError it throws is kept (the first one) and the work goes on.
+  void attempt(const std::function<void()>& write);
+  bool failed() const { return first_ != nullptr; }
+  long failures() const { return failures_; }
+  // commit_in_order(tables); then, if a secondary output failed, throws its error with the
+  // note "the table was written: NAME" (NAMES for several; "the other outputs ..." when a
+  // table failed too, whose error is thrown instead).
+  void commit_then_throw(std::initializer_list<AtomicOutput*> tables);
+
+ private:
+  std::unique_ptr<cmp::InputError> first_;
+  long failures_ = 0;
+};
 
 // A path to remove if the process is interrupted, registered for as long as this object
 // lives (it removes nothing itself when destroyed: the owner removes or renames its file).

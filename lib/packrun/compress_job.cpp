@@ -311,7 +311,8 @@ class CompressRun {
     fail_unless_converged(row);
     check_penetration(row);
     rows_.push_back(table_.format_row(row, seconds_since(step_start)));
-    if (row.target) write_packing(*row.target);
+    // A packing that cannot be written (a full disk) is said after the table, which keeps the run.
+    if (row.target) packings_.attempt([&] { write_packing(*row.target); });
     remember();
     bar_.update(std::min(1.0, (run_.phi() - phi_from_) / span_));
     note(row.relax.residual);
@@ -424,7 +425,7 @@ class CompressRun {
 
   // compress.csv: the run's parameters as `# key=value` lines, then every row so far.
   void write_table() {
-    if (!csv_out_) return;
+    if (!csv_out_) return packings_.commit_then_throw({});
     const auto& m = o_.model;
     io::CsvWriter csv(csv_out_->stream());
     csv.meta("provenance", provenance_);
@@ -447,7 +448,7 @@ class CompressRun {
     }
     csv.header(table_.header);
     for (const auto& r : rows_) csv.row(split_cells(r));
-    csv_out_->commit();
+    packings_.commit_then_throw({&*csv_out_});
   }
 
   // The packing OFF at a target (-o with {phi}), its parameters as `# key=value` comments
@@ -499,6 +500,7 @@ class CompressRun {
   std::size_t saved_rows_ = 0;
   double phi_from_ = 0, span_ = 1;  // the bar: phi from the start to the last target
   std::optional<io::AtomicOutput> csv_out_;
+  io::SecondaryOutputs packings_;  // the OFF at each target
   clock::time_point last_checkpoint_;
 };
 

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <iostream>
+#include <optional>
 
 namespace cmp::packrun {
 
@@ -63,16 +64,19 @@ void run_jam_batch(const JamBatch& b, const std::string& provenance) {
     bar.update(static_cast<double>(finished));
   });
   bar.finish();
+  // The packings and the table are each a result: one that cannot be written (a full disk) is
+  // said after the other is.
+  io::SecondaryOutputs packings;
   if (!b.packing_output.empty() && !packing_per_seed) {
     std::vector<io::XyzFrame> frames;
     for (long k = 0; k < n; ++k) frames.push_back(spheres::jammed_frame(results[k], seeds[k], provenance, p.material));
-    io::write_xyz(b.packing_output, frames);
+    packings.attempt([&] { io::write_xyz(b.packing_output, frames); });
   }
+  std::optional<io::AtomicOutput> table;
   if (!csv.empty() && !csv_per_seed) {
-    io::AtomicOutput out(csv);
-    spheres::write_jamming_table(out.stream(), results, seeds, p, provenance, b.timings);
-    out.commit();
+    spheres::write_jamming_table(table.emplace(csv).stream(), results, seeds, p, provenance, b.timings);
   }
+  packings.commit_then_throw({table ? &*table : nullptr});
   if (!b.quiet && n == 1) std::cerr << "shellpack: " << spheres::jamming_summary(results.front()) << "\n";
   if (!b.quiet && n > 1) std::cerr << "shellpack: " << spheres::jamming_batch_summary(results) << "\n";
 }

@@ -27,11 +27,12 @@ void run_shell_job(const ShellJob& job, const std::string& provenance) {
   });
   bar.finish();
   if (csv_out) shell::write_shell_table(csv_out->stream(), result, o, provenance);
+  io::SecondaryOutputs mesh_out;  // a mesh that cannot be written does not lose the table
   if (!job.mesh_output.empty()) {
     mesh::VertexMatrix V = Eigen::Map<const mesh::VertexMatrix>(result.final_state.data(), rest.V.rows(), 3);
-    io::write_off(job.mesh_output, V, rest.F, {provenance});
+    mesh_out.attempt([&] { io::write_off(job.mesh_output, V, rest.F, {provenance}); });
   }
-  if (csv_out) csv_out->commit();
+  mesh_out.commit_then_throw({csv_out ? &*csv_out : nullptr});
   if (!job.quiet && !result.rows.empty()) {
     const auto& last = result.rows.back();
     std::cerr << "shellpack: " << result.rows.size() << " steps; last: Pi " << last.observables.turgor << ", volume "

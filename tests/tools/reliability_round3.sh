@@ -82,4 +82,41 @@ case_shell_pressure_and_analyze_d0_name_the_option() {
     "$shellpack" analyze "$src/tests/data/io/octahedron_packing.off" --d0 1e308 -o out.csv
 }
 
+# --- item 3: a finished table kept when a secondary output fails ---
+case_percolate_table_kept_when_the_image_fails() {
+  [ -w /dev/full ] || fail "no /dev/full"
+  "$percolate" "$sc" --delta 0.1 --csv pf.csv -o /dev/full -q 2>err.txt
+  local status=$?
+  [ "$status" -eq 2 ] || fail "exit $status: $(cat err.txt)"
+  grep -q "^percolate: /dev/full: write error: No space left on device (the table was written: pf.csv)$" err.txt ||
+    fail "message: $(cat err.txt)"
+  [ "$(wc -l <err.txt)" -eq 1 ] || fail "not one line: $(cat err.txt)"
+  [ "$(rows pf.csv)" -eq 1 ] || fail "the table was lost: $(ls -a)"
+  # every run's row, each image tried
+  ln -s /dev/full c_0.1.vtk && ln -s /dev/full c_0.2.vtk
+  "$percolate" "$sc" --delta 0.1,0.2 --csv pf2.csv -o 'c_{delta}.vtk' -q 2>err.txt
+  [ $? -eq 2 ] && grep -q "(the table was written: pf2.csv; 1 more output failed)" err.txt || fail "two: $(cat err.txt)"
+  [ "$(rows pf2.csv)" -eq 2 ] || fail "rows lost with two deltas"
+}
+case_compress_table_kept_when_a_packing_fails() {
+  [ -w /dev/full ] || fail "no /dev/full"
+  make_start
+  "$shellpack" compress jammed.xyz --mesh cell.off --contact hertz-vertices --step 0.1 --ftol 1e-4 -q \
+    --phi 0.5 --csv cf.csv -o /dev/full 2>err.txt
+  local status=$?
+  [ "$status" -eq 2 ] || fail "exit $status: $(cat err.txt)"
+  grep -q "^shellpack: /dev/full: write error: .* (the table was written: cf.csv)$" err.txt || fail "message: $(cat err.txt)"
+  [ "$(rows cf.csv)" -ge 1 ] || fail "the table was lost: $(ls -a)"
+}
+case_shell_and_jam_tables_kept_when_the_other_output_fails() {
+  [ -w /dev/full ] || fail "no /dev/full"
+  "$rndmesh" icosa --level 2 -o cell.off -q || fail "rndmesh"
+  "$shellpack" shell --mesh cell.off --pressure 0.01 --steps 2 --csv sh.csv -o /dev/full -q 2>err.txt
+  [ $? -eq 2 ] && grep -q "/dev/full: write error.*(the table was written: sh.csv)" err.txt || fail "shell: $(cat err.txt)"
+  [ "$(rows sh.csv)" -ge 1 ] || fail "shell: the table was lost"
+  "$shellpack" jam -N 12 -o /dev/full --csv jam.csv -q 2>err.txt
+  [ $? -eq 2 ] && grep -q "/dev/full: write error.*(the table was written: jam.csv)" err.txt || fail "jam: $(cat err.txt)"
+  [ "$(rows jam.csv)" -eq 1 ] || fail "jam: the table was lost"
+}
+
 run_cases "$@"

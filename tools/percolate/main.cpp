@@ -123,6 +123,7 @@ void run_percolate(const Options& o, const voxel::PercolatePlan& plan) {
   // during the first analysis leaves no file at all.
   io::AtomicOutput csv_out(o.csv);
   std::optional<io::CsvWriter> csv;
+  io::SecondaryOutputs images;  // a cluster image that cannot be written does not lose the table
   std::vector<std::string> summaries;
   std::string warning;
   {
@@ -130,7 +131,7 @@ void run_percolate(const Options& o, const voxel::PercolatePlan& plan) {
     warning = voxel::run_percolate(frames, plan, runs, [&](std::size_t r, voxel::PercolateRunResult& result) {
       if (!csv) voxel::write_percolate_csv_header(csv.emplace(csv_out.stream()), plan, result.columns);
       csv->row(result.row);
-      if (!o.vtk.empty()) io::write_vtk(vtk_names[r], result.image, result.title);
+      if (!o.vtk.empty()) images.attempt([&] { io::write_vtk(vtk_names[r], result.image, result.title); });
       // Below a progress bar the lines wait until it has finished its own line.
       if (bar.enabled()) summaries.push_back("percolate: " + result.summary);
       else if (!o.common.quiet || o.timings) std::cerr << "percolate: " << result.summary << '\n';
@@ -139,7 +140,7 @@ void run_percolate(const Options& o, const voxel::PercolatePlan& plan) {
   }
   for (const auto& line : summaries) std::cerr << line << '\n';
   if (!warning.empty()) std::cerr << "percolate: " << warning << '\n';
-  csv_out.commit();
+  images.commit_then_throw({&csv_out});
 }
 
 void run_sweep(const Options& o, const std::string& provenance) {
