@@ -131,11 +131,21 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
   if (n == 0)
     throw ComputationError(fmt::format("no point lies in the domain of model {} ({}){}", m.name, m.domain,
                                        r.dropped_why.empty() ? "" : ": dropped " + r.dropped_why));
-  if (n < nfree)
-    throw ComputationError(fmt::format("{} point{} for {} free parameters of model {}: a fit needs at least as "
-                                       "many points as parameters{}",
-                                       n, n == 1 ? "" : "s", nfree, m.name,
-                                       r.dropped_why.empty() ? "" : " (dropped " + r.dropped_why + ")"));
+  if (n < nfree + 1)
+    throw DegenerateFit(fmt::format("{} point{} for {} free parameters of model {}: a fit needs at least {}, one "
+                                    "more than its free parameters (else chi2_dof is undefined){}",
+                                    n, n == 1 ? "" : "s", nfree, m.name, nfree + 1,
+                                    r.dropped_why.empty() ? "" : " (dropped " + r.dropped_why + ")"));
+  const auto [x_lo, x_hi] = std::minmax_element(pr.x.begin(), pr.x.end());
+  if (*x_lo == *x_hi)
+    throw DegenerateFit(fmt::format("no spread in x: all {} points have x = {}{}", n, *x_lo,
+                                    r.dropped_why.empty() ? "" : " (dropped " + r.dropped_why + ")"));
+  const auto [y_lo, y_hi] = std::minmax_element(pr.y.begin(), pr.y.end());
+  if (*y_lo == *y_hi)
+    throw DegenerateFit(o.loss == Loss::MaxLikelihood
+                            ? fmt::format("no spread in y: all {} outcomes are {}: no transition to fit", n, *y_lo)
+                            : fmt::format("no spread in y: all {} points have y = {}{}", n, *y_lo,
+                                          r.dropped_why.empty() ? "" : " (dropped " + r.dropped_why + ")"));
 
   // Bounds: the model's, and phi_c below the smallest x.
   for (int k = 0; k < np; ++k) pr.lower.push_back(m.params[k].lower), pr.upper.push_back(m.params[k].upper);
@@ -207,6 +217,20 @@ FitResult fit(const Model& m, const std::vector<double>& x_in, const std::vector
   } else {
     r.aic = static_cast<double>(n) * std::log(rss / static_cast<double>(n)) + 2.0 * nfree;
   }
+  // No statistic is written that is not a number: anything non-finite is a failed fit, but for
+  // a perfect fit's AIC (rss 0: n ln 0), which the tables leave empty (fit_table.hpp).
+  const std::vector<std::pair<const char*, double>> statistics =
+      o.loss == Loss::MaxLikelihood
+          ? std::vector<std::pair<const char*, double>>{{"log_likelihood", r.log_likelihood},
+                                                        {"deviance", r.deviance},
+                                                        {"pseudo_r2", r.pseudo_r2},
+                                                        {"aic", r.aic}}
+          : std::vector<std::pair<const char*, double>>{
+                {"rss", r.rss}, {"r2", r.r2}, {"chi2_dof", r.chi2_dof}, {"aic", r.aic}};
+  for (const auto& [name, value] : statistics)
+    if (!std::isfinite(value) && !(std::string(name) == "aic" && r.rss == 0 && o.loss != Loss::MaxLikelihood))
+      throw ComputationError(fmt::format("model {}: the fit's {} is {} (rss {}): no statistic to report", m.name,
+                                         name, value, r.rss));
   return r;
 }
 

@@ -4,6 +4,7 @@
 // standard errors from the covariance scaled by the residual variance (scipy curve_fit's
 // default, absolute_sigma=False); or, for 0/1 outcomes and the sigmoid, maximum likelihood
 // (Loss::MaxLikelihood, logistic regression).
+#include "core/errors.hpp"
 #include "fit/models.hpp"
 
 #include <Eigen/Core>
@@ -22,6 +23,15 @@ enum class Loss {
 std::string loss_name(Loss loss);  // "linear", "log", "ml"
 // Parses "linear", "log", "ml"; throws cmp::UsageError naming --loss otherwise.
 Loss parse_loss(const std::string& name);
+
+// Data that no fit can describe, whatever the solver does: fewer points than free parameters
+// plus one (chi2_dof undefined), or no spread in x or in y (the threshold, the exponent or r2
+// undefined). A ComputationError (a bootstrap replica drawn degenerate just fails), which
+// kcfit reports as bad input, exit 2, naming its file (group_fit.hpp).
+class DegenerateFit : public ComputationError {
+ public:
+  using ComputationError::ComputationError;
+};
 
 struct FitOptions {
   Loss loss = Loss::Linear;
@@ -54,7 +64,7 @@ struct FitResult {
                                      // residuals and weighted mean when weighted)
   double chi2_dof = 0;               // rss / (n - k), the reduced chi^2 (residual variance when
                                      // unweighted); NaN when n == k
-  double aic = 0;                    // n ln(rss / n) + 2k (least squares); 2k - 2 ln L (ML)
+  double aic = 0;                    // n ln(rss / n) + 2k (least squares; -inf when rss = 0); 2k - 2 ln L (ML)
   // Maximum likelihood only:
   double log_likelihood = 0;         // ln L at the optimum
   double null_log_likelihood = 0;    // ln L of the constant probability (the fraction of ones)

@@ -1,6 +1,9 @@
 #include "fit/fit_inputs.hpp"
 
+#include "core/errors.hpp"
 #include "io/csv.hpp"
+
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -23,6 +26,23 @@ Loss choose_loss(const std::string& option, const Model& model, const Rows& rows
   bool binary = true;
   for (std::size_t i : selected) binary = binary && (rows.number(i, y) == 0 || rows.number(i, y) == 1);
   return option == "auto" ? (model.probability && binary ? Loss::MaxLikelihood : Loss::Linear) : parse_loss(option);
+}
+
+void check_outcomes(const Model& model, const Rows& rows, const std::vector<std::size_t>& selected, int y) {
+  const std::string& name = rows.header[y];
+  const bool outcomes = std::find(model.outcome_columns.begin(), model.outcome_columns.end(), name) !=
+                        model.outcome_columns.end();
+  if (!outcomes && !model.probability) return;
+  for (std::size_t i : selected) {
+    const double v = rows.number(i, y);
+    if (outcomes && v != 0 && v != 1)
+      throw InputError(rows.files[rows.source[i]], rows.lines[i],
+                       fmt::format("{} holds 0/1 outcomes (model {}), got {}", name, model.name, io::format_number(v)));
+    if (!(v >= 0 && v <= 1))
+      throw InputError(rows.files[rows.source[i]], rows.lines[i],
+                       fmt::format("{} must lie in [0, 1] for model {} (a probability), got {}", name, model.name,
+                                   io::format_number(v)));
+  }
 }
 
 int sigma_column(const Rows& rows, const std::string& option, Loss loss, const std::string& y_name) {

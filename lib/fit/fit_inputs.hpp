@@ -25,6 +25,12 @@ int resolve_column(const Rows& rows, const std::string& given, const std::vector
 Loss choose_loss(const std::string& option, const Model& model, const Rows& rows,
                  const std::vector<std::size_t>& selected, int y);
 
+// The y cells of the selected rows as the model reads them: in a column of 0/1 outcomes
+// (model.outcome_columns, the sigmoid's percolates) every value must be 0 or 1, and a
+// probability model's y must lie in [0, 1]. Throws cmp::InputError(file, line, "percolates
+// holds 0/1 outcomes (model sigmoid), got 2") at the first that does not.
+void check_outcomes(const Model& model, const Rows& rows, const std::vector<std::size_t>& selected, int y);
+
 // The column of the standard errors of y, or -1 for none: --sigma option (rows.column, an
 // InputError naming --sigma when missing); "none": -1; not given: the column "<y_name>_error"
 // when there is one and the loss is linear.

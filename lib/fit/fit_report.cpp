@@ -70,8 +70,6 @@ std::string report_summary(const std::string& program, const FitReport& report) 
                         r.dropped ? fmt::format(" ({} dropped: {})", r.dropped, r.dropped_why) : "",
                         parameter_summary(r, false), goodness_summary(r, false), r.aic, r.status,
                         r.at_bound ? "; WARNING: a parameter ended on its bound" : "");
-    if (r.n == r.free_parameters)
-      text += program + ": warning: as many points as free parameters: the standard errors are undefined (inf)\n";
   }
   return text;
 }

@@ -49,8 +49,7 @@ struct FitReport {
 void write_report_csv(io::CsvWriter& csv, const FitReport& report);
 
 // One line per fit, "<program>: [group: ]model (loss loss[, weighted]), n points[ (k dropped:
-// why)]: parameters; goodness, AIC = ...; status[; WARNING: a parameter ended on its bound]",
-// followed by a warning line when a fit has as many points as free parameters.
+// why)]: parameters; goodness, AIC = ...; status[; WARNING: a parameter ended on its bound]".
 std::string report_summary(const std::string& program, const FitReport& report);
 
 }  // namespace cmp::fit

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace cmp::fit {
 
 std::vector<std::pair<std::string, std::string>> goodness(const FitResult& r) {
@@ -12,7 +14,9 @@ std::vector<std::pair<std::string, std::string>> goodness(const FitResult& r) {
             {"deviance", format_number(r.deviance)},
             {"pseudo_r2", format_number(r.pseudo_r2)},
             {"aic", format_number(r.aic)}};
-  return {{"r2", format_number(r.r2)}, {"chi2_dof", format_number(r.chi2_dof)}, {"aic", format_number(r.aic)}};
+  // A perfect fit (rss 0) has no AIC (n ln 0): left empty rather than written as -inf.
+  return {{"r2", format_number(r.r2)}, {"chi2_dof", format_number(r.chi2_dof)},
+          {"aic", std::isfinite(r.aic) ? format_number(r.aic) : std::string()}};
 }
 
 void write_parameter_table(io::CsvWriter& csv, const FitResult& r, const BootstrapResult* boot) {

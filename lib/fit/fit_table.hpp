@@ -19,7 +19,8 @@
 
 namespace cmp::fit {
 
-// The goodness-of-fit measures of the fit's loss, as (name, formatted value).
+// The goodness-of-fit measures of the fit's loss, as (name, formatted value); every one finite
+// (fit() refuses others), but for a perfect fit's AIC (rss 0), which is left empty.
 std::vector<std::pair<std::string, std::string>> goodness(const FitResult& r);
 
 // "# key=value" lines of one fit (n, dropped, status, starts, goodness ...), then the

@@ -15,6 +15,12 @@ GroupData group_data(const Rows& rows, const std::vector<std::size_t>& indices, 
   GroupData d;
   if (sigma >= 0) d.sigma_column = rows.header[sigma];
   const std::string& y_name = rows.header[y];
+  d.x_column = rows.header[x], d.y_column = y_name;
+  std::vector<std::size_t> sources;
+  for (std::size_t i : indices)
+    if (std::find(sources.begin(), sources.end(), rows.source[i]) == sources.end()) sources.push_back(rows.source[i]);
+  std::sort(sources.begin(), sources.end());
+  for (std::size_t k : sources) d.files += (d.files.empty() ? "" : ", ") + rows.files[k];
   for (std::size_t i : indices) {
     d.x.push_back(rows.number(i, x)), d.y.push_back(rows.number(i, y));
     if (loss == Loss::MaxLikelihood && d.y.back() != 0 && d.y.back() != 1)
@@ -52,6 +58,10 @@ GroupFit fit_group(const Model& model, const GroupData& data, const FitOptions& 
           fmt::format("every {} is 0: no weights (--sigma none fits unweighted)", data.sigma_column));
     gf.result = fit(model, data.x, data.y, options, data.sigma);
     if (replicas > 0) gf.boot = bootstrap(model, data.x, data.y, options, gf.result, replicas, seed, data.sigma);
+  } catch (const DegenerateFit& e) {
+    const std::string group = columns.empty() ? "" : group_label(columns, gf.key) + ": ";
+    throw InputError(data.files, 0,
+                     fmt::format("{}{} (x: {}, y: {})", group, e.what(), data.x_column, data.y_column));
   } catch (const ComputationError& e) {
     if (columns.empty()) throw;
     throw ComputationError(group_label(columns, gf.key) + ": " + e.what());

@@ -258,6 +258,7 @@ std::vector<Model> make_models() {
     k.x_in_domain = [](double) { return true; };
     k.domain = "all x";
     k.probability = true;
+    k.outcome_columns = {"percolates"};
     k.starts = [](const std::vector<double>& x, const std::vector<double>& y) {
       // Centre: mean x of the points with an intermediate probability, else the midpoint
       // between the largest x with y < 1/2 and the smallest with y >= 1/2.

@@ -58,6 +58,9 @@ struct Model {
   // Whether the model is a probability in [0, 1] (the sigmoid), which allows the
   // maximum-likelihood loss for 0/1 outcomes.
   bool probability = false;
+  // Columns of y that hold 0/1 outcomes (the sigmoid's `percolates`): any other value there is
+  // bad input (fit_inputs.hpp, check_outcomes).
+  std::vector<std::string> outcome_columns;
 
   // Index of the named parameter or -1.
   int index(const std::string& parameter) const;

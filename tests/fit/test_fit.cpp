@@ -254,13 +254,27 @@ TEST_CASE("bootstrap gives the same result on 1 and 2 threads and a spread close
   CHECK(other.mean != one.mean);
 }
 
-TEST_CASE("as many points as free parameters give an exact fit with infinite errors as in curve_fit", "[fit]") {
+TEST_CASE("a fit needs one point more than its free parameters, and spread in x and y", "[fit]") {
+  // As many points as free parameters fitted exactly, with infinite errors and chi2_dof = nan
+  // (issue 58): now refused, as are data without spread (r2 = nan, a threshold anywhere).
   fit::FitOptions o;
   o.fixed = {{"e", 1.0}};
-  const auto r = fit::fit(fit::find_model("power"), {0.2, 0.3}, {1, 2}, o);
-  CHECK(r.value[0] == Approx(10).epsilon(1e-9));
-  CHECK(r.value[1] == Approx(0.1).epsilon(1e-9));
-  CHECK(std::isinf(r.error[0]));
-  CHECK(std::isinf(r.error[1]));
-  CHECK(r.error[2] == 0);
+  const auto& power = fit::find_model("power");
+  CHECK_THROWS_MATCHES(fit::fit(power, {0.2, 0.3}, {1, 2}, o), fit::DegenerateFit,
+                       Catch::Message("2 points for 2 free parameters of model power: a fit needs at least 3, one "
+                                      "more than its free parameters (else chi2_dof is undefined)"));
+  const auto& kc = fit::find_model("kc-percolation");
+  CHECK_THROWS_AS(fit::fit(kc, {0.2}, {1}, {}), fit::DegenerateFit);
+  CHECK_THROWS_WITH(fit::fit(kc, {0.2}, {1}, {}), Catch::Contains("1 point for 3 free"));
+  CHECK_THROWS_MATCHES(fit::fit(kc, {0.2, 0.3, 0.4, 0.5, 0.6}, {1, 1, 1, 1, 1}, {}), fit::DegenerateFit,
+                       Catch::Message("no spread in y: all 5 points have y = 1"));
+  CHECK_THROWS_MATCHES(fit::fit(kc, {0.3, 0.3, 0.3, 0.3, 0.3}, {1, 2, 3, 4, 5}, {}), fit::DegenerateFit,
+                       Catch::Message("no spread in x: all 5 points have x = 0.3"));
+  fit::FitOptions log;
+  log.loss = Loss::Log;
+  CHECK_THROWS_AS(fit::fit(kc, {0.2, 0.3, 0.4, 0.5, 0.6}, {2, 2, 2, 2, 2}, log), fit::DegenerateFit);
+  // one point more is a fit, and every statistic is a number
+  const auto r = fit::fit(power, {0.2, 0.3, 0.45}, {1, 2, 3.2}, o);
+  for (double v : {r.r2, r.chi2_dof, r.aic, r.rss}) CHECK(std::isfinite(v));
+  CHECK(std::isfinite(r.error[0]));
 }

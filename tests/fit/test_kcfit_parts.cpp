@@ -3,6 +3,7 @@
 // of the stderr summary (fit_report.hpp).
 #include "core/errors.hpp"
 #include "fit/fit_report.hpp"
+#include "fit/fit_inputs.hpp"
 #include "fit/fix_option.hpp"
 #include "fit/group_fit.hpp"
 #include "fit/selection.hpp"
@@ -65,6 +66,34 @@ TEST_CASE("a negative error or a fraction under the ml loss is an input error at
                                                                   "probability) is negative: -0.1"));
   CHECK_THROWS_WITH(fit::group_data(rows, all(rows), 0, 1, -1, fit::Loss::MaxLikelihood),
                     Catch::Contains("p.csv:3") && Catch::Contains("--loss ml needs probability to be 0 or 1, got 0.2"));
+}
+
+TEST_CASE("data no fit can describe is an input error naming the file and the group", "[fit]") {
+  const auto rows = rows_of({{"0.10", "0.5", "0.1", "0.04"}, {"0.12", "0.5", "0.1", "0.04"},
+                             {"0.14", "0.5", "0.1", "0.04"}, {"0.16", "0.5", "0.1", "0.04"}});
+  const auto d = fit::group_data(rows, all(rows), 0, 1, 2, fit::Loss::Linear);
+  CHECK(d.files == "p.csv");
+  const auto& m = fit::find_model("sigmoid");
+  CHECK_THROWS_MATCHES(fit::fit_group(m, d, {}, 0, 1, {"delta"}, {0.04}), InputError,
+                       Catch::Message("p.csv: delta=0.04: no spread in y: all 4 points have y = 0.5 (x: porosity, y: "
+                                      "probability)"));
+}
+
+TEST_CASE("a 0/1 outcome column holds only 0 and 1, a probability lies in [0, 1]", "[fit]") {
+  io::CsvTable t;
+  t.file = "o.csv";
+  t.header = {"porosity", "percolates"};
+  t.header_line = 1;
+  t.rows = {{"0.1", "0"}, {"0.2", "1"}, {"0.3", "2"}};
+  t.row_lines = {2, 3, 4};
+  const auto rows = fit::merge_tables({t});
+  const auto& m = fit::find_model("sigmoid");
+  CHECK_THROWS_MATCHES(fit::check_outcomes(m, rows, all(rows), 1), InputError,
+                       Catch::Message("o.csv:4: percolates holds 0/1 outcomes (model sigmoid), got 2"));
+  CHECK_NOTHROW(fit::check_outcomes(fit::find_model("power"), rows, all(rows), 1));
+  const auto p = rows_of({{"0.1", "0.2", "0", "0.04"}, {"0.2", "-0.1", "0", "0.04"}});
+  CHECK_THROWS_MATCHES(fit::check_outcomes(m, p, all(p), 1), InputError,
+                       Catch::Message("p.csv:3: probability must lie in [0, 1] for model sigmoid (a probability), got -0.1"));
 }
 
 TEST_CASE("a group whose errors are all zero is refused and named", "[fit]") {

@@ -124,14 +124,14 @@ case_bad_input() {
   expect_error 2 "--loss: unknown loss" "$kcfit" in.csv --model power --loss cubic -o out.csv
   expect_error 2 "--loss: ml is for 0/1 outcomes" "$kcfit" in.csv --model power --loss ml -o out.csv
   printf 'porosity,percolates\n0.1,0\n0.2,0.5\n0.3,1\n' >half.csv
-  expect_error 2 "half.csv:3: --loss ml needs percolates to be 0 or 1" "$kcfit" half.csv --model sigmoid --loss ml -o out.csv
+  expect_error 2 "half.csv:3: percolates holds 0/1 outcomes (model sigmoid), got 0.5" "$kcfit" half.csv --model sigmoid --loss ml -o out.csv
   expect_error 2 "no-such.csv" "$kcfit" no-such.csv --model power -o out.csv
   expect_error 2 "input CSV file is required" "$kcfit" --model power
   expect_error 2 "--plot-kc: needs --plot$" "$kcfit" in.csv --model power --plot-kc -o out.csv
 }
 case_fit_failures() {
   printf 'porosity,permeability\n0.2,1\n0.3,2\n' >two.csv
-  expect_error 1 "2 points for 3 free parameters" "$kcfit" two.csv --model kc-percolation -o out.csv --plot out.png
+  expect_error 2 "two.csv: 2 points for 3 free parameters" "$kcfit" two.csv --model kc-percolation -o out.csv --plot out.png
   printf 'porosity,permeability\n1.2,1\n1.3,2\n1.5,3\n1.7,4\n' >outside.csv
   expect_error 1 "no point lies in the domain of model kc-percolation" "$kcfit" outside.csv --model kc-percolation -o out.csv
   expect_error 1 "no point lies in the domain" "$kcfit" "$flow" --model power --fix phi_c=0.9 -o out.csv

@@ -119,4 +119,37 @@ case_shell_and_jam_tables_kept_when_the_other_output_fails() {
   [ "$(rows jam.csv)" -eq 1 ] || fail "jam: the table was lost"
 }
 
+# --- item 5: degenerate fits refused, exit 2 naming the reason; nothing non-finite written ---
+case_kcfit_degenerate_fits_refused() {
+  cli_tool=kcfit
+  printf 'porosity,permeability\n0.2,1\n' >one.csv
+  expect_error 2 "one.csv: 1 point for 3 free parameters of model kc-percolation: a fit needs at least 4" \
+    "$kcfit" one.csv --model kc-percolation -o out.csv
+  printf 'porosity,permeability\n0.2,1\n0.3,2\n0.4,3\n' >three.csv
+  expect_error 2 "three.csv: 3 points for 3 free parameters" "$kcfit" three.csv --model kc-percolation -o out.csv
+  printf 'porosity,permeability\n0.2,1\n0.3,1\n0.4,1\n0.5,1\n0.6,1\n' >flat.csv
+  expect_error 2 "flat.csv: no spread in y: all 5 points have y = 1 (x: porosity, y: permeability)" \
+    "$kcfit" flat.csv --model kc-percolation -o out.csv
+  expect_error 2 "flat.csv: no spread in y" "$kcfit" flat.csv --model power -o out.csv
+  printf 'porosity,permeability\n0.3,1\n0.3,2\n0.3,3\n0.3,4\n0.3,5\n' >samex.csv
+  expect_error 2 "samex.csv: no spread in x: all 5 points have x = 0.3" "$kcfit" samex.csv --model kc-percolation -o out.csv
+  # per group: the group is named
+  printf 'delta,porosity,permeability\n1,0.2,1\n1,0.3,2\n1,0.4,3\n1,0.5,5\n2,0.2,1\n2,0.3,1\n2,0.4,1\n2,0.5,1\n' >g.csv
+  expect_error 2 "g.csv: delta=2: no spread in y" "$kcfit" g.csv --model power --group-by delta -o out.csv
+  # a fit that is refused writes nothing; one that is accepted writes only finite statistics
+  printf 'porosity,permeability\n0.2,1\n0.3,2.1\n0.4,2.9\n0.5,4.2\n0.6,5\n' >ok.csv
+  "$kcfit" ok.csv --model power -o fit.csv -q || fail "a good fit refused"
+  ! grep -qi 'nan\|inf' <(grep '^# \(r2\|chi2_dof\|aic\|rss\)=' fit.csv) || fail "non-finite statistic: $(cat fit.csv)"
+}
+case_kcfit_sigmoid_outcomes_are_0_or_1() {
+  cli_tool=kcfit
+  printf 'porosity,percolates\n0.1,0\n0.2,0\n0.3,2\n0.25,1\n0.15,0\n0.35,1\n' >two.csv
+  expect_error 2 "two.csv:4: percolates holds 0/1 outcomes (model sigmoid), got 2" "$kcfit" two.csv --model sigmoid -o out.csv
+  printf 'porosity,probability\n0.1,0\n0.2,0.2\n0.3,1.5\n0.4,1\n' >p.csv
+  expect_error 2 "p.csv:4: probability must lie in \[0, 1\] for model sigmoid (a probability), got 1.5" \
+    "$kcfit" p.csv --model sigmoid -o out.csv
+  printf 'porosity,percolates\n0.1,1\n0.2,1\n0.3,1\n' >ones.csv
+  expect_error 2 "ones.csv: no spread in y: all 3 outcomes are 1" "$kcfit" ones.csv --model sigmoid -o out.csv
+}
+
 run_cases "$@"

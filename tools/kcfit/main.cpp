@@ -51,6 +51,7 @@ int run(const Options& o, const fit::Model& model, const fit::FitOptions& base, 
                      fmt::format("no row satisfies --where {}", fmt::join(o.where, " --where ")));
   // The loss: maximum likelihood for the sigmoid on 0/1 outcomes unless told otherwise.
   fit::FitOptions fo = base;
+  fit::check_outcomes(model, rows, selected, yc);
   fo.loss = fit::choose_loss(o.loss, model, rows, selected, yc);
   const int sc = fit::sigma_column(rows, o.sigma, fo.loss, yname);
 
