@@ -96,6 +96,24 @@ void remove_registered_temporaries() noexcept {
 TemporaryPath::TemporaryPath(const std::string& path, Kind kind) : slot_(register_temporary(path, kind)) {}
 TemporaryPath::~TemporaryPath() { unregister_temporary(slot_); }
 
+std::string temporary_template(const std::string& path) {
+  const std::filesystem::path target(path);
+  std::string name = target.filename().string();
+  // ".<name>.tmp.XXXXXX" is 12 bytes longer than the name: cut the name (at a UTF-8 character's
+  // start) so that the temporary fits the folder's NAME_MAX whenever the target does. mkstemp
+  // makes it unique; the name only says what it is for.
+  const std::string folder = target.parent_path().empty() ? "." : target.parent_path().string();
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const std::size_t name_max = limit > 0 ? static_cast<std::size_t>(limit) : 255;
+  constexpr std::size_t kExtra = 12;  // "." and ".tmp.XXXXXX"
+  if (name.size() + kExtra > name_max) {
+    std::size_t keep = name_max > kExtra ? name_max - kExtra : 0;
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;
+    name.resize(keep);
+  }
+  return (target.parent_path() / ("." + name + ".tmp.XXXXXX")).string();
+}
+
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
   // Throws when the target cannot be written (io/output_paths.hpp: the check every program
   // also makes on all its outputs before any work).
@@ -115,9 +133,8 @@ void AtomicOutput::create_temporary() {
     file_ = std::move(file);
     return;
   }
-  const std::filesystem::path target(path_);
   // Hidden, in the same folder: rename() is atomic only within one file system.
-  std::string templ_text = (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  const std::string templ_text = temporary_template(path_);
   std::vector<char> templ(templ_text.begin(), templ_text.end());
   templ.push_back('\0');
   SignalsBlocked blocked;

@@ -50,6 +50,10 @@ class AtomicOutput {
   bool in_place_ = false;  // a device or pipe: no temporary, no rename
 };
 
+// The mkstemp template of path's temporary, "<dir>/.<name>.tmp.XXXXXX", the name cut so that
+// the whole fits the folder's NAME_MAX (a 255-byte target's temporary would not).
+std::string temporary_template(const std::string& path);
+
 // Commits outputs in the order given (the primary result first), each even when an earlier one
 // failed, so that a secondary output that cannot be written (a full disk, /dev/full) never
 // discards a result already computed; null pointers are skipped. Then throws the first

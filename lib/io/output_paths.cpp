@@ -2,6 +2,8 @@
 
 #include "core/errors.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -67,6 +69,11 @@ void check_writable(const std::string& path) {
   if (!S_ISDIR(st.st_mode)) throw InputError(path, 0, std::string("cannot write: ") + std::strerror(ENOTDIR));
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     throw InputError(path, 0, std::string("cannot write: ") + std::strerror(errno));
+  // A name the folder's file system refuses: said now, not when the result is written.
+  const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  if (name_max > 0 && name.size() > static_cast<std::size_t>(name_max))
+    throw InputError(path, 0, fmt::format("cannot write: {} (the name has {} bytes, the folder allows {})",
+                                          std::strerror(ENAMETOOLONG), name.size(), name_max));
 }
 
 std::string file_identity(const std::string& path) {

@@ -152,4 +152,30 @@ case_kcfit_sigmoid_outcomes_are_0_or_1() {
   expect_error 2 "ones.csv: no spread in y: all 3 outcomes are 1" "$kcfit" ones.csv --model sigmoid -o out.csv
 }
 
+# --- item 7: output names ---
+case_long_output_names_fit_name_max() {
+  local max
+  max=$(getconf NAME_MAX .)
+  cluster_vtk
+  # 251-255 bytes failed with "File name too long" (the temporary is 12 bytes longer), lbflow's
+  # only after the flow.
+  for n in 243 251 255; do
+    local name
+    name=$(printf 'a%.0s' $(seq 1 $((n - 4)))).off
+    [ "${#name}" -eq "$n" ] || fail "name of ${#name}"
+    "$rndmesh" icosa --level 1 -o "$name" -q || fail "rndmesh -o of $n bytes"
+    [ -s "$name" ] || fail "not written: $n bytes"
+    local csv=${name%.off}.csv
+    "$lbflow" c.vtk --refine 1 -q -o "$csv" || fail "lbflow -o of $n bytes"
+    [ -s "$csv" ] || fail "lbflow: not written"
+    rm -f "$name" "$csv"
+  done
+  ! ls -a | grep -q '\.tmp\.' || fail "a temporary left: $(ls -a)"
+  # beyond NAME_MAX: refused before any work, under the option
+  local long
+  long=$(printf 'a%.0s' $(seq 1 $((max - 3)))).off
+  cli_tool=lbflow expect_error 2 "--output: a*\.off: cannot write: File name too long (the name has $((max + 1)) bytes, the folder allows $max)" \
+    "$lbflow" c.vtk --refine 1 -q -o "$long"
+}
+
 run_cases "$@"
