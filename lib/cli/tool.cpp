@@ -199,13 +199,20 @@ void Tool::add_seed_options(CLI::App& where, SeedOptions& seeds, const std::stri
 }
 
 std::vector<std::uint64_t> Tool::seed_list(const SeedOptions& seeds) {
-  if (seeds.seeds.empty()) return {seeds.seed};
-  try {
-    return parse_seed_range(seeds.seeds, "--seeds");
-  } catch (const UsageError& e) {
-    check(false, "", e.what());
-    return {seeds.seed};
-  }
+  std::vector<std::uint64_t> list{seeds.seed};
+  if (!seeds.seeds.empty()) try {
+      list = parse_seed_range(seeds.seeds, "--seeds");
+    } catch (const UsageError& e) {
+      check(false, "", e.what());
+    }
+  std::vector<std::string> names;
+  for (auto s : list) names.push_back(std::to_string(s));
+  set_placeholder_values("seed", std::move(names));
+  return list;
+}
+
+void Tool::set_placeholder_values(const std::string& placeholder, std::vector<std::string> values) {
+  placeholder_values_[placeholder] = std::move(values);
 }
 
 void Tool::check_seed_pattern(std::size_t seed_count, const std::string& flag, const std::string& pattern,
@@ -340,7 +347,7 @@ void Tool::finish_checks() const {
     if (i.paths) inputs.insert(inputs.end(), i.paths->begin(), i.paths->end());
     if (i.path) inputs.push_back(*i.path);
   }
-  for (const auto& p : io::output_path_problems(outputs, inputs)) {
+  for (const auto& p : io::output_path_problems(outputs, inputs, placeholder_values_)) {
     bool reported = false;  // one problem per flag
     for (const auto& q : problems) reported = reported || q.rfind(p.flag + ": ", 0) == 0;
     if (!reported) problems.push_back(p.flag + ": " + p.message);

@@ -37,6 +37,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,9 @@ class Tool {
   CLI::Option* add_output(CLI::App& where, const std::string& flags, std::string& value, const std::string& help);
   // Declares an output whose option the tool adds itself (a flag taking several forms).
   void declare_output(CLI::App& where, const std::string& flag, const std::string& value);
+  // The values a placeholder of the output patterns takes ("seed" -> the seeds; seed_list
+  // sets it): a pattern whose folder holds it ('s{seed}/r.off') is checked in each folder.
+  void set_placeholder_values(const std::string& placeholder, std::vector<std::string> values);
   // The files the (sub)command reads: no output may be one of them. The vector or string is
   // read when the checks run (after parse), so bind it as for add_option.
   void declare_inputs(CLI::App& where, const std::vector<std::string>& paths);
@@ -188,6 +192,7 @@ class Tool {
     const std::string* path;
   };
   std::vector<DeclaredOutput> outputs_;
+  std::map<std::string, std::vector<std::string>> placeholder_values_;
   std::vector<DeclaredInputs> inputs_;
   std::string name_;
   std::unique_ptr<CLI::App> app_;

@@ -49,6 +49,51 @@ std::string identity_of_name(const std::string& path) {
          std::filesystem::path(path).filename().string();
 }
 
+// The placeholders of text, in order, each once ("seed" of "s{seed}/r.off").
+std::vector<std::string> placeholders(const std::string& text) {
+  std::vector<std::string> names;
+  for (std::size_t k = text.find('{'); k != std::string::npos; k = text.find('{', k + 1)) {
+    const auto close = text.find('}', k);
+    if (close == std::string::npos) break;
+    const auto name = text.substr(k + 1, close - k - 1);
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+std::string replace_all(std::string text, const std::string& key, const std::string& value) {
+  const std::string token = "{" + key + "}";
+  for (auto at = text.find(token); at != std::string::npos; at = text.find(token, at + value.size()))
+    text.replace(at, token.size(), value);
+  return text;
+}
+
+// The names a pattern's folders take with the known values (its file name filled with "0"):
+// one per distinct folder, at most kMaxFolders of them. Empty when a placeholder of the folder
+// has no known values.
+constexpr std::size_t kMaxFolders = 100000;
+std::vector<std::string> expanded_in_folders(const std::string& pattern, const PlaceholderValues& values) {
+  const std::filesystem::path p(pattern);
+  const std::string folder = p.parent_path().string(), name = filled(p.filename().string());
+  std::vector<std::string> folders{folder};
+  for (const auto& key : placeholders(folder)) {
+    const auto known = values.find(key);
+    if (known == values.end() || known->second.empty()) return {};
+    std::vector<std::string> next;
+    for (const auto& f : folders)
+      for (const auto& v : known->second) {
+        if (next.size() >= kMaxFolders) break;
+        next.push_back(replace_all(f, key, v));
+      }
+    std::sort(next.begin(), next.end());
+    next.erase(std::unique(next.begin(), next.end()), next.end());
+    folders = std::move(next);
+  }
+  std::vector<std::string> out;
+  for (const auto& f : folders) out.push_back((std::filesystem::path(f) / name).string());
+  return out;
+}
+
 }  // namespace
 
 void check_writable(const std::string& path) {
@@ -88,7 +133,8 @@ std::string file_identity(const std::string& path) {
 }
 
 std::vector<PathProblem> output_path_problems(const std::vector<OutputPath>& outputs,
-                                              const std::vector<std::string>& inputs) {
+                                              const std::vector<std::string>& inputs,
+                                              const PlaceholderValues& values) {
   std::vector<PathProblem> problems;
   std::map<std::string, std::string> input_ids;  // identity -> the input as given
   for (const auto& in : inputs) {
@@ -99,14 +145,31 @@ std::vector<PathProblem> output_path_problems(const std::vector<OutputPath>& out
   for (const auto& out : outputs) {
     if (out.path.empty() || out.path == "-") continue;
     const bool pattern = is_pattern(out.path);
-    const auto checked = pattern ? filled(out.path) : out.path;
-    try {
-      check_writable(checked);
-    } catch (const InputError& e) {
-      // "path: cannot write: ...", said of the path as given (a pattern, not its filled name)
-      const std::string what = e.what();
-      problems.push_back({out.flag, out.path + what.substr(std::min(what.size(), checked.size()))});
-      continue;
+    const bool folder_pattern = pattern && is_pattern(std::filesystem::path(out.path).parent_path().string());
+    if (folder_pattern) {
+      // The folders the pattern names once filled in; each must be writable.
+      bool bad = false;
+      for (const auto& name : expanded_in_folders(out.path, values)) {
+        try {
+          check_writable(name);
+        } catch (const InputError& e) {
+          const std::string what = e.what();
+          problems.push_back({out.flag, name + " (from " + out.path + ")" + what.substr(std::min(what.size(), name.size()))});
+          bad = true;
+          break;
+        }
+      }
+      if (bad) continue;
+    } else {
+      const auto checked = pattern ? filled(out.path) : out.path;
+      try {
+        check_writable(checked);
+      } catch (const InputError& e) {
+        // "path: cannot write: ...", said of the path as given (a pattern, not its filled name)
+        const std::string what = e.what();
+        problems.push_back({out.flag, out.path + what.substr(std::min(what.size(), checked.size()))});
+        continue;
+      }
     }
     // A pattern is one family of files: the same pattern in the same folder is the same
     // family; it is compared with fixed names and inputs through no single file.

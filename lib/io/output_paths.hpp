@@ -6,6 +6,7 @@
 // spelling: `o.csv`, `./o.csv`, `dir/../o.csv`, a symbolic link to it and a hard link all count
 // as one file. cli::Tool runs these checks on every output and input a program declares
 // (Tool::add_output, Tool::declare_inputs) with the rest of its option checks.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,13 @@ struct PathProblem {
 // of -o: two outputs of one run cannot share a file"), or an input ("j.xyz is also an input:
 // the output would replace it"). "-" and empty values are skipped (the stdout rule is the
 // program's).
+// A pattern whose folder holds placeholders ('s{seed}/r.off') is checked in every folder its
+// known values name (values: placeholder -> the values it takes, e.g. "seed" -> {"1", "2"}),
+// "s3/r.off (from s{seed}/r.off): cannot write: No such file or directory"; a placeholder of
+// the folder whose values are not known yet ({frame}) leaves that folder to the writer.
+using PlaceholderValues = std::map<std::string, std::vector<std::string>>;
 std::vector<PathProblem> output_path_problems(const std::vector<OutputPath>& outputs,
-                                              const std::vector<std::string>& inputs);
+                                              const std::vector<std::string>& inputs,
+                                              const PlaceholderValues& values = {});
 
 }  // namespace cmp::io

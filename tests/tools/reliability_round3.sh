@@ -177,5 +177,22 @@ case_long_output_names_fit_name_max() {
   cli_tool=lbflow expect_error 2 "--output: a*\.off: cannot write: File name too long (the name has $((max + 1)) bytes, the folder allows $max)" \
     "$lbflow" c.vtk --refine 1 -q -o "$long"
 }
+case_templates_expanded_before_their_folders_are_checked() {
+  mkdir s1 s2
+  "$rndmesh" random -n 20 --sweeps 1 --anneals 1 --seeds 1:2 -o 's{seed}/r.off' -q || fail "s{seed}/r.off refused"
+  [ -s s1/r.off ] && [ -s s2/r.off ] || fail "not written: $(ls s1 s2)"
+  # a folder one of the seeds names that does not exist: refused before any work, naming it
+  cli_tool=rndmesh expect_error 2 "--output: s3/r.off (from s{seed}/r.off): cannot write: No such file or directory" \
+    "$rndmesh" random -n 20 --seeds 1:3 -o 's{seed}/r.off'
+  [ ! -e s1/out.off ] || fail "written"
+  "$shellpack" jam -N 12 --seeds 1:2 -o 's{seed}/j.xyz' -q >/dev/null || fail "shellpack jam s{seed}/j.xyz refused"
+  [ -s s2/j.xyz ] || fail "jam: not written"
+  # percolate's {delta} and {scale} in a folder
+  mkdir d0.1 d0.2
+  "$percolate" "$sc" --delta 0.1,0.2 -o 'd{delta}/c.vtk' -q >/dev/null || fail "percolate d{delta}/c.vtk refused"
+  [ -s d0.2/c.vtk ] || fail "percolate: not written"
+  cli_tool=percolate expect_error 2 "--output: d0.3/c.vtk (from d{delta}/c.vtk): cannot write" \
+    "$percolate" "$sc" --delta 0.1,0.3 -o 'd{delta}/c.vtk'
+}
 
 run_cases "$@"

@@ -83,6 +83,12 @@ voxel::PercolatePlan check_percolate(cli::Tool& tool, const Options& o) {
   tool.collect("--sphere-marking", [&] { ao.sphere_marking = voxel::sphere_marking_from_name(o.sphere_marking); });
   tool.collect("--connectivity", [&] { ao.connectivity = voxel::connectivity_from_name(o.connectivity); });
   tool.collect("--axis", [&] { ao.flow_axis = voxel::axis_from_name("--axis", o.axis); });
+  // -o's folders may hold {name}, {scale} and {delta}: each is checked ({frame} only when written).
+  std::vector<std::string> names;
+  for (const auto& in : o.inputs) names.push_back(stem(in));
+  tool.set_placeholder_values("name", names);
+  tool.set_placeholder_values("scale", plan.scale_names);
+  tool.set_placeholder_values("delta", plan.delta_names);
   if (!o.vtk.empty()) {  // checked per input; run_percolate names the files of every frame
     std::vector<std::string> vtk_names;
     for (const auto& r : voxel::percolate_runs(o.inputs.size(), plan.scales.size(), plan.deltas.size()))
