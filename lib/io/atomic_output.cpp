@@ -225,6 +225,9 @@ void commit_in_order(std::initializer_list<AtomicOutput*> outputs) {
   throw with_note(*first, "the other outputs were written: " + written);
 }
 
+SecondaryOutputs::SecondaryOutputs() = default;
+SecondaryOutputs::~SecondaryOutputs() = default;
+
 void SecondaryOutputs::attempt(const std::function<void()>& write) {
   try {
     write();

@@ -74,6 +74,10 @@ cmp::InputError with_note(const cmp::InputError& e, const std::string& note);
 //   secondary.commit_then_throw({&table_out});
 class SecondaryOutputs {
  public:
+  SecondaryOutputs();
+  ~SecondaryOutputs();  // out of line: InputError is only declared here
+  SecondaryOutputs(const SecondaryOutputs&) = delete;
+  SecondaryOutputs& operator=(const SecondaryOutputs&) = delete;
   // Runs write; an InputError it throws is kept (the first one) and the work goes on.
   void attempt(const std::function<void()>& write);
   bool failed() const { return first_ != nullptr; }
