@@ -63,9 +63,14 @@ for f in flow:
 # every percolating cluster at FLOW_DELTA went through lbflow, and no other
 perc_flow = [r for r in perc if r["percolates"] == "1" and abs(float(r["delta"]) - 0.1) < 1e-12]
 assert len(perc_flow) == len(flow), (len(perc_flow), len(flow))
-# the fits used every point they were given: kcfit's n is the table's count
-fit = meta(f"{d}/fits/tortuosity_M1.csv")
-assert int(fit["n"]) == len(flow), (fit["n"], len(flow))
+# the fits used every point they were given: kcfit's n is the table's count; kcfit refuses fewer
+# points than the tortuosity's 2 free parameters plus one (issue 58), and then writes no fit
+tortuosity = f"{d}/fits/tortuosity_M1.csv"
+if len(flow) >= 3:
+    fit = meta(tortuosity)
+    assert int(fit["n"]) == len(flow), (fit["n"], len(flow))
+else:
+    assert not os.path.exists(tortuosity), f"a tortuosity fit of {len(flow)} points"
 sig = meta(f"{d}/fits/hydraulic_radius.csv")
 assert int(sig["n"]) == len(perc_flow), (sig["n"], len(perc_flow))
 print(f"{checked} percolate rows, {len(flow)} flows checked")
