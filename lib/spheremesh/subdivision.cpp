@@ -156,7 +156,16 @@ std::string subdivision_name(Subdivision scheme) {
   return "?";
 }
 
+namespace {
+void check_level(int level) {
+  if (level < 1) throw UsageError("level must be at least 1 (the base polyhedron), got " + std::to_string(level));
+  if (level > kMaxSubdivisionLevel)
+    throw UsageError("level " + std::to_string(level) + " is too fine (more than 10^8 triangles)");
+}
+}  // namespace
+
 long subdivision_face_count(Subdivision scheme, int level) {
+  check_level(level);  // the shifts below are undefined for level < 1
   if (scheme == Subdivision::Simple) return 12L << (level - 1);
   const long base = scheme == Subdivision::Tetrahedron ? 4 : scheme == Subdivision::Octahedron ? 8 : 20;
   return base << (2 * (level - 1));
@@ -167,8 +176,7 @@ long subdivision_vertex_count(Subdivision scheme, int level) {
 }
 
 mesh::TriMesh subdivided_sphere(Subdivision scheme, int level, double radius) {
-  if (level < 1) throw UsageError("level must be at least 1 (the base polyhedron), got " + std::to_string(level));
-  if (level > 14) throw UsageError("level " + std::to_string(level) + " is too fine (more than 10^8 triangles)");
+  check_level(level);
   if (!(radius > 0) || !std::isfinite(radius)) throw UsageError("radius must be positive");
   Polyhedron p = base_polyhedron(scheme);
   for (int l = 1; l < level; ++l) {

@@ -137,3 +137,19 @@ TEST_CASE("Radius scales the mesh and bad arguments are refused", "[subdivision]
   CHECK_THROWS_AS(spheremesh::subdivided_sphere(Subdivision::Icosahedron, 2, -1.0), UsageError);
   CHECK_THROWS_AS(spheremesh::subdivision_from_name("dodeca"), UsageError);
 }
+
+TEST_CASE("Counts are refused outside levels 1 to 14 (not shifted by a negative count)", "[subdivision]") {
+  // rndmesh checked --level 0's vertex count with its range: 20 << (2 * -1) is undefined
+  // (UBSan: "shift exponent -2 is negative") and gave 0 here.
+  for (auto scheme : {Subdivision::Simple, Subdivision::Tetrahedron, Subdivision::Octahedron, Subdivision::Icosahedron}) {
+    INFO(spheremesh::subdivision_name(scheme));
+    for (int level : {-1, 0, spheremesh::kMaxSubdivisionLevel + 1, 40}) {
+      INFO("level " << level);
+      CHECK_THROWS_AS(spheremesh::subdivision_face_count(scheme, level), UsageError);
+      CHECK_THROWS_AS(spheremesh::subdivision_vertex_count(scheme, level), UsageError);
+    }
+    CHECK(spheremesh::subdivision_face_count(scheme, 1) > 0);
+  }
+  CHECK(spheremesh::subdivision_face_count(Subdivision::Icosahedron, spheremesh::kMaxSubdivisionLevel) == 20L << 26);
+  CHECK_THROWS_AS(spheremesh::subdivided_sphere(Subdivision::Icosahedron, spheremesh::kMaxSubdivisionLevel + 1), UsageError);
+}

@@ -114,6 +114,15 @@ case_bad_temperatures() { expect_error 2 "--tmax: must be at least --tmin" "$rnd
 case_bad_level() {
   expect_error 2 "--level: must lie in \[1, 14\], got '0'" "$rndmesh" icosa --level 0 -o out.off
   expect_error 2 "--level: 'abc' is not an integer" "$rndmesh" icosa --level abc -o out.off
+  # Every scheme, both ends: one line naming --level (its vertex count is not computed for a
+  # level out of range: level 0 shifted by -2), nothing written.
+  local s l
+  for s in simple tetra octa icosa; do
+    for l in -1 0 15 64; do
+      expect_error 2 "--level: must lie in \[1, 14\], got '$l'$" "$rndmesh" $s --level $l -o out.off
+    done
+  done
+  expect_error 2 "--level: .*99999999999" "$rndmesh" icosa --level 99999999999 -o out.off
   expect_error 2 "--points: '2e3' is not an integer" "$rndmesh" random -n 2e3 -o out.off
   expect_error 2 "--radius: '1x' is not a finite number" "$rndmesh" random -n 20 --radius 1x -o out.off
 }

@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
           std::tuple{"octa", spheremesh::Subdivision::Octahedron, "octahedron, quadrisection per level"},
           std::tuple{"icosa", spheremesh::Subdivision::Icosahedron, "icosahedron, quadrisection per level"}}) {
       auto* sub = app->add_subcommand(name, std::string("iterative sphere mesh: ") + what);
-      tool.add_int(*sub, "-l,--level", o.level, "subdivision level; 1 is the base polyhedron", cli::closed(1, 14));
+      tool.add_int(*sub, "-l,--level", o.level, "subdivision level; 1 is the base polyhedron", cli::closed(1, spheremesh::kMaxSubdivisionLevel));
       tool.add_double(*sub, "-r,--radius", o.radius, "sphere radius [length units]", cli::positive());
       tool.add_output(*sub, "-o,--output", o.output, "output OFF file ('-': stdout)");
       tool.add_common(*sub, o.common, cli::Tool::kQuiet);
@@ -195,9 +195,10 @@ int main(int argc, char** argv) {
 
     tool.parse(argc, argv);
     // A level is checked by the mesh it makes, before any of it is built: icosa at level 14
-    // would be 671 million vertices (tens of GB), simple at level 14 is 49,154.
+    // would be 671 million vertices (tens of GB), simple at level 14 is 49,154. A level outside
+    // [1, 14] was reported by its range check, and has no vertex count.
     for (const auto& [sub, scheme] : schemes)
-      if (sub->parsed())
+      if (sub->parsed() && o.level >= 1 && o.level <= spheremesh::kMaxSubdivisionLevel)
         tool.check(spheremesh::subdivision_vertex_count(scheme, o.level) <= kMaxMeshVertices, "--level",
                    fmt::format("level {} of {} makes {} vertices, more than {} (2^24)", o.level,
                                spheremesh::subdivision_name(scheme), spheremesh::subdivision_vertex_count(scheme, o.level),
