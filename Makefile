@@ -49,6 +49,19 @@ FUZZ_SECONDS ?= 30
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_READERS := off xyz csv vtk packing
 FUZZ_PACKAGES := clang libclang-rt-14-dev
+# Records the hashes of tests/tools/golden_outputs.sh again, in tests/data/golden (every case,
+# or GOLDEN_CASES='kcfit lbflow'), for a change that means to change results: its commit says
+# why. Never under CI (CI=true refuses, before anything is built); `make test` only reads them.
+GOLDEN_CASES ?= $(shell bash tests/tools/golden_outputs.sh --list 2>/dev/null)
+.PHONY: golden-record
+golden-record:
+	@if [ "$${CI:-}" = true ]; then echo "make golden-record: not under CI (CI=true): goldens are recorded by hand and committed" >&2; exit 2; fi
+	$(MAKE) all
+	@for c in $(GOLDEN_CASES); do \
+	  CMP_BIN=$(BUILD)/bin bash tests/tools/golden_outputs.sh --record $$c tests/data/golden/$$c.txt || exit 1; \
+	done
+	@git diff --stat -- tests/data/golden
+
 .PHONY: fuzz
 fuzz:
 	@scripts/ci/install_debian_packages.sh fuzz $(FUZZ_PACKAGES)

@@ -2,9 +2,11 @@
 # Behaviour unchanged (issue 38): seeded commands of every program, their outputs' hashes
 # (tests/support/golden_hash.py: version, timings and thread counts taken out) compared with
 # the hashes recorded in tests/data/golden/CASE.txt. A reorganisation of the code must leave
-# them as they are; a change that means to change results records them again, on purpose:
-#   GOLDEN_RECORD=1 CMP_BIN=build/bin bash tests/tools/golden_outputs.sh CASE
-# and says why in its commit. `bash tests/tools/golden_outputs.sh --list` prints the cases.
+# them as they are; a change that means to change results records them again, on purpose,
+# with `make golden-record` (every case; GOLDEN_CASES='kcfit lbflow' for some), never under
+# CI, and says why in its commit. The test itself never writes into tests/data/golden,
+# whatever the environment holds: only `--record CASE FILE` (what make golden-record runs)
+# writes the hashes, to FILE. `bash tests/tools/golden_outputs.sh --list` prints the cases.
 set -uo pipefail
 bin=${CMP_BIN:-build/bin}
 bin=$(cd "$bin" && pwd)
@@ -83,18 +85,17 @@ case_jam2d_chamber() {
   run "$jam2d" avalanches series.csv --distribution dist.csv -o drops.csv
 }
 
-# The hashes of every file the case wrote (its stderr log aside), compared or recorded.
-check_hashes() {
-  local case=$1 want="$src/tests/data/golden/$1.txt"
+# The hashes of every file the case wrote (its stderr log aside), in hashes.txt.
+hash_outputs() {
   local files; files=$(find . -type f ! -name stderr.log ! -name stdout.txt ! -name stderr.txt | sed 's|^\./||' | LC_ALL=C sort)
+  [ -n "$files" ] || fail "the case wrote nothing"
   # shellcheck disable=SC2086
   /usr/bin/python3 "$src/tests/support/golden_hash.py" --src "$src" $files >hashes.txt || fail "hashing failed"
-  if [ "${GOLDEN_RECORD:-0}" = 1 ]; then
-    cp hashes.txt "$want"
-    echo "recorded $want" >&2
-    return
-  fi
-  [ -f "$want" ] || fail "no recorded hashes $want (GOLDEN_RECORD=1 records them)"
+}
+# Compared with the recorded ones, which are only read.
+check_hashes() {
+  local case=$1 want="$src/tests/data/golden/$1.txt"
+  [ -s "$want" ] || fail "no recorded hashes $want (make golden-record records them)"
   diff "$want" hashes.txt >diff.txt || fail "$case: outputs differ from the recorded ones (< recorded, > now):
 $(cat diff.txt)"
 }
@@ -103,5 +104,19 @@ if [ "${1:-}" = --list ]; then
   declare -F | sed -n 's/^declare -f case_//p'
   exit 0
 fi
+if [ "${1:-}" = --record ]; then  # --record CASE FILE: make golden-record's, never the test's
+  [ $# -eq 3 ] || fail "usage: golden_outputs.sh --record CASE FILE"
+  [ "${CI:-}" != true ] || fail "goldens are not recorded under CI (CI=true)"
+  record_to=$3
+  case $record_to in /*) ;; *) record_to="$OLDPWD/$record_to" ;; esac
+  declare -F "case_$2" >/dev/null || fail "unknown case '$2'"
+  "case_$2"
+  hash_outputs
+  cp hashes.txt "$record_to" || fail "cannot write $record_to"
+  echo "recorded $record_to" >&2
+  exit 0
+fi
+declare -F "case_${1:-}" >/dev/null || fail "unknown case '${1:-}'"
 "case_$1"
+hash_outputs
 check_hashes "$1"
