@@ -27,6 +27,45 @@ expect_error() {
   ! ls out.* .out.* 2>/dev/null | grep >/dev/null . || fail "$*: left a file behind: $(ls -a)"
 }
 
+# lacks [-i] WHY PATTERN FILE...: no line of any FILE matches PATTERN (grep; -i: ignoring case).
+# A negative check says something only about a run that succeeded and wrote its file, so call
+# it after checking the run's status; a missing or empty FILE fails, as does a grep error:
+# `grep -q PATTERN FILE && fail` passed when the program had crashed and written nothing.
+lacks() {
+  local opt=()
+  [ "$1" = -i ] && { opt=(-i); shift; }
+  local why=$1 pattern=$2 f got; shift 2
+  for f in "$@"; do
+    [ -s "$f" ] || fail "$why: $f is missing or empty: nothing to search"
+    grep -q "${opt[@]}" -- "$pattern" "$f"; got=$?
+    [ "$got" -ne 0 ] || fail "$why: $f: $(grep -m3 "${opt[@]}" -- "$pattern" "$f")"
+    [ "$got" -eq 1 ] || fail "$why: grep failed on $f"
+  done
+}
+
+# same_lines WHY DROP A B: A and B are byte for byte the same once the lines matching DROP
+# (grep -v) are taken out, and something remains of each: `cmp <(grep -v X a) <(grep -v X b)`
+# compared empty with empty when both files were missing.
+same_lines() {
+  local why=$1 drop=$2 a=$3 b=$4 f
+  for f in "$a" "$b"; do [ -s "$f" ] || fail "$why: $f is missing or empty"; done
+  local ka kb d
+  ka=$(mktemp "${cli_scratch:-${TMPDIR:-/tmp}}/.same_a.XXXXXX") && kb=$(mktemp "${cli_scratch:-${TMPDIR:-/tmp}}/.same_b.XXXXXX") ||
+    fail "$why: mktemp"
+  grep -v -- "$drop" "$a" >"$ka"
+  grep -v -- "$drop" "$b" >"$kb"
+  if [ ! -s "$ka" ] || [ ! -s "$kb" ]; then
+    rm -f "$ka" "$kb"
+    fail "$why: nothing is left of $a or $b without the lines matching '$drop'"
+  fi
+  if ! cmp -s "$ka" "$kb"; then
+    d=$(diff "$ka" "$kb" | head -6)
+    rm -f "$ka" "$kb"
+    fail "$why: $a and $b differ: $d"
+  fi
+  rm -f "$ka" "$kb"
+}
+
 # on_terminal OUT cmd...: runs cmd with stdin, stdout and stderr on a new pseudo-terminal
 # (CI has none: this makes one), writes what the terminal received to OUT, returns cmd's status.
 on_terminal() {

@@ -36,7 +36,7 @@ case_random_reproducible() {
   "$rndmesh" random -n 200 --seed 7 --sweeps 5 --anneals 20 -o a.off -q || fail "random a"
   "$rndmesh" random -n 200 --seed 7 --sweeps 5 --anneals 20 -o b.off -q || fail "random b"
   "$rndmesh" random -n 200 --seed 8 --sweeps 5 --anneals 20 -o c.off -q || fail "random c"
-  cmp -s <(grep -v '^# rndmesh' a.off) <(grep -v '^# rndmesh' b.off) || fail "same seed, different files"
+  same_lines "same seed, different files" '^# rndmesh' a.off b.off
   cmp -s <(grep -v '^#' a.off) <(grep -v '^#' c.off) && fail "different seeds, same mesh"
   [ "$(off_counts a.off)" = "200 396" ] || fail "counts $(off_counts a.off)"
   grep -q "^# closed_manifold=1" a.off || fail "not closed"
@@ -48,7 +48,7 @@ case_random_seeds_parallel() {
   for s in 3 4 5 6; do
     [ -f m_$s.off ] || fail "m_$s.off missing"
     "$rndmesh" random -n 120 --seed $s --threads 1 --sweeps 5 --anneals 10 -o one.off -q || fail "seed $s"
-    cmp -s <(grep -v '^# rndmesh' m_$s.off) <(grep -v '^# rndmesh' one.off) || fail "seed $s differs"
+    same_lines "seed $s differs" '^# rndmesh' m_$s.off one.off
   done
   expect_error 2 "{seed}" "$rndmesh" random -n 120 --seeds 1:2 -o out.off
   expect_error 2 "seeds" "$rndmesh" random -n 120 --seeds 2:1 -o 'out_{seed}.off'
@@ -208,10 +208,10 @@ case_same_seed_same_bytes() {
   done
   for s in 4 5; do
     for f in a2_$s.off b1_$s.off b2_$s.off; do
-      cmp <(grep -v '^# rndmesh ' a1_$s.off) <(grep -v '^# rndmesh ' $f) || fail "$f differs from a1_$s.off"
+      same_lines "$f differs from a1_$s.off" '^# rndmesh ' a1_$s.off $f
     done
     for f in a2_$s.csv b1_$s.csv b2_$s.csv; do
-      cmp <(grep -v '^# provenance=' a1_$s.csv) <(grep -v '^# provenance=' $f) || fail "$f differs from a1_$s.csv"
+      same_lines "$f differs from a1_$s.csv" '^# provenance=' a1_$s.csv $f
     done
   done
   ! cmp -s a1_4.off a1_5.off || fail "two seeds, one mesh"
