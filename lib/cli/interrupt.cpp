@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace cmp::cli {
@@ -44,6 +46,13 @@ void install_interrupt_handlers(const std::string& tool) {
     if (sig == SIGINT && old.sa_handler == SIG_IGN) continue;
     sigaction(sig, &action, nullptr);
   }
+}
+
+void announce_work_started() {
+  const char* path = std::getenv("CMP_READY_FILE");
+  if (path == nullptr || *path == '\0') return;
+  std::FILE* f = std::fopen(path, "w");
+  if (f != nullptr) std::fclose(f);
 }
 
 }  // namespace cmp::cli

@@ -352,7 +352,10 @@ void Tool::finish_checks() const {
     for (const auto& q : problems) reported = reported || q.rfind(p.flag + ": ", 0) == 0;
     if (!reported) problems.push_back(p.flag + ": " + p.message);
   }
-  if (problems.empty()) return;
+  if (problems.empty()) {
+    announce_work_started();
+    return;
+  }
   std::string all;
   for (const auto& p : problems) all += p + "\n";
   throw UsageError(all + hint());

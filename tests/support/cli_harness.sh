@@ -91,15 +91,32 @@ sys.exit(os.waitstatus_to_exitcode(status) if hasattr(os, "waitstatus_to_exitcod
 PY
 }
 
-# interrupt_run SIGNAL SECONDS cmd...: starts cmd in the background (job control on, so SIGINT
-# is not ignored as it is for background jobs of a script), sends SIGNAL after SECONDS, and
-# returns cmd's exit status; its stderr goes to interrupt.err.
+# wait_ready PID FILE: waits until FILE exists (a program given CMP_READY_FILE=FILE creates it
+# when its options are checked and its work starts: lib/cli/interrupt.hpp); fails if process
+# PID ends first. No deadline: a blocked program is left to ctest's timeout, and a slow or
+# loaded machine only makes the wait longer.
+wait_ready() {
+  local pid=$1 file=$2
+  until [ -e "$file" ]; do
+    kill -0 "$pid" 2>/dev/null || [ -e "$file" ] || fail "the program ended before its work started"
+    sleep 0.01
+  done
+}
+
+# interrupt_run SIGNAL cmd...: starts cmd in the background (job control on, so SIGINT is not
+# ignored as it is for background jobs of a script), sends SIGNAL once cmd says that its work
+# started (CMP_READY_FILE, created outside the working folder: wait_ready), and returns cmd's
+# exit status; its stderr goes to interrupt.err. The run must be long enough not to end
+# between the two.
 interrupt_run() {
-  local sig=$1 delay=$2; shift 2
+  local sig=$1; shift
+  local ready
+  ready=$(mktemp -u "${TMPDIR:-/tmp}/cmp_ready.XXXXXX")
   set -m
-  "$@" >/dev/null 2>interrupt.err &
+  CMP_READY_FILE=$ready "$@" >/dev/null 2>interrupt.err &
   local pid=$!
-  sleep "$delay"
+  wait_ready "$pid" "$ready"
+  rm -f "$ready"
   kill -s "$sig" "$pid"
   wait "$pid"; local got=$?
   set +m

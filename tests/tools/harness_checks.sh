@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The shared checks of tests/support/cli_harness.sh fail when they should: a negative check
 # (lacks) on the output of a program that crashed and wrote nothing, a comparison (same_lines)
-# of two missing or two empty files.
+# of two missing or two empty files, an interrupted run whose program never starts its work.
 # Each case runs the check in a subshell (fail exits) and expects its status.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_harness.sh"
@@ -37,4 +37,15 @@ case_same_lines() {
   accepted "the same lines" same_lines "same" '^# provenance' a.csv b.csv
   [ -z "$(ls -A | grep '^\.same_')" ] || fail "temporaries left: $(ls -A)"
 }
+case_interrupt_run_waits_for_work() {
+  # A program that never announces its work (CMP_READY_FILE) and ends: the signal test fails
+  # instead of signalling nothing.
+  refused "interrupt_run of a program that never starts its work" interrupt_run INT true
+  # One that announces it, then works until the signal: interrupted, by that signal.
+  # shellcheck disable=SC2016
+  interrupt_run TERM sh -c 'trap "exit 143" TERM; : >"$CMP_READY_FILE"; while :; do sleep 0.01; done'
+  local got=$?
+  [ "$got" -eq 143 ] || fail "exit $got after SIGTERM"
+}
+
 run_cases "$@"

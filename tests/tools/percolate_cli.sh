@@ -331,10 +331,15 @@ case_interrupt_sigint() {
   # Ctrl-C during one long run: no CSV temporary exists while the analysis runs (it appears
   # with the first row, so even a SIGKILL there leaves nothing), and after the signal nothing
   # is left; exit 130, "interrupted".
+  # The signal comes once percolate says that its work started (CMP_READY_FILE, outside this
+  # folder); the run takes about 2 s (400^3 voxels, 26 neighbours).
+  local ready
+  ready=$(mktemp -u "${TMPDIR:-/tmp}/cmp_ready.XXXXXX")
   set -m
-  "$percolate" "$sc" --delta 0.01 --connectivity 26 --periodic --threads 1 --csv perc.csv -q >/dev/null 2>interrupt.err &
+  CMP_READY_FILE=$ready "$percolate" "$sc" --delta 0.01 --connectivity 26 --periodic --threads 1 --csv perc.csv -q >/dev/null 2>interrupt.err &
   local pid=$!
-  sleep 0.7  # the run takes about 2 s (400^3 voxels, 26 neighbours)
+  wait_ready "$pid" "$ready"
+  rm -f "$ready"
   local during
   during=$(ls -A | grep -v '^interrupt.err$')
   kill -0 "$pid" 2>/dev/null || fail "the run ended before the signal: make it longer"

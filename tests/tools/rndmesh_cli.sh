@@ -150,11 +150,20 @@ case_help_shows_types() {
   "$rndmesh" random --help | grep >/dev/null -- "--resume" || fail "no --resume"
 }
 interrupted_case() {  # interrupted_case SIGNAL STATUS
-  interrupt_run "$1" 1 "$rndmesh" random -n 40000 --seeds 1:2 --threads 2 -o 'out_{seed}.off' --trace 'out_{seed}.csv'
+  interrupt_run "$1" "$rndmesh" random -n 40000 --seeds 1:2 --threads 2 -o 'out_{seed}.off' --trace 'out_{seed}.csv'
   local got=$?
   [ "$got" = "$2" ] || fail "exit $got after SIG$1, expected $2: $(cat interrupt.err)"
   [ "$(cat interrupt.err)" = "rndmesh: interrupted" ] || fail "stderr: $(cat interrupt.err)"
   [ -z "$(ls -A | grep -v '^interrupt.err$')" ] || fail "left files: $(ls -A)"
+}
+case_ready_file() {
+  # CMP_READY_FILE (what interrupt_run waits for) appears once the options are checked: not
+  # for a refused command line, and before the run's result.
+  CMP_READY_FILE=$PWD/bad.ready "$rndmesh" icosa --level 0 -o out.off 2>/dev/null && fail "--level 0 accepted"
+  [ ! -e bad.ready ] || fail "ready file written for a refused command line"
+  CMP_READY_FILE=$PWD/good.ready "$rndmesh" icosa --level 2 -o good.off -q || fail "icosa --level 2"
+  [ -e good.ready ] && [ -s good.off ] || fail "no ready file: $(ls -A)"
+  [ ! good.ready -nt good.off ] || fail "ready file written after the result"
 }
 case_interrupt_sigint() { interrupted_case INT 130; }
 case_interrupt_sigterm() { interrupted_case TERM 143; }

@@ -141,7 +141,7 @@ case_warns_when_packings_are_rare() {
   [ ! -s err.txt ] || fail "warned at N = 20: $(cat err.txt)"
 }
 interrupted_case() {  # interrupted_case SIGNAL STATUS
-  interrupt_run "$1" 1 "$shellpack" jam -N 200 --seeds 1:2 -o 'out_{seed}.xyz' --csv out.csv
+  interrupt_run "$1" "$shellpack" jam -N 200 --seeds 1:2 -o 'out_{seed}.xyz' --csv out.csv
   local got=$?
   [ "$got" = "$2" ] || fail "exit $got after SIG$1, expected $2: $(cat interrupt.err)"
   [ "$(grep -v warning interrupt.err)" = "shellpack: interrupted" ] || fail "stderr: $(cat interrupt.err)"
