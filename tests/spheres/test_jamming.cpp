@@ -55,9 +55,19 @@ TEST_CASE("Jammed packings are isostatic and rattler-free, N = 16, 32, 50, and p
 }
 
 TEST_CASE("Jamming: same seed, same packing, whatever the thread count, another seed, another packing") {
+  // Two threads against one, both set: "max threads" against 1 compared 1 with 1 on a one-CPU
+  // runner. At 20 spheres the parallel passes themselves (2048 spheres and more) are not
+  // entered: their 1-against-2-thread checks are test_hertz_spheres's and test_fire's; this
+  // one says that the team size reaches nothing else (the seeds' streams, the tries).
   const JammingParameters p;
-  const auto a = jam_spheres(20, 5, p);
   const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  int team = 0;
+#pragma omp parallel
+#pragma omp single
+  team = omp_get_num_threads();
+  REQUIRE(team == 2);  // whatever the machine's cores (OMP_THREAD_LIMIT=1 would make it vacuous)
+  const auto a = jam_spheres(20, 5, p);
   omp_set_num_threads(1);
   const auto b = jam_spheres(20, 5, p);
   omp_set_num_threads(threads);
