@@ -120,13 +120,17 @@ TEST_CASE("Poiseuille: with MRT and TRT kappa does not depend on tau, with BGK i
   }
 }
 
-TEST_CASE("porous box: TRT kappa does not depend on tau, MRT (fixed ghost rates) only slightly") {
+TEST_CASE("porous box: with TRT and MRT (ghost rates scaled with tau) kappa does not depend on tau") {
   PoreLattice p = periodic_spheres(20, 16, 16, {{4, 4, 4, 4.5}, {12, 10, 6, 5}, {7, 12, 13, 4}, {16, 3, 11, 3.5}, {2, 9, 9, 3}});
   p.wall_fraction = nullptr;
+  // Down to the tau of lbflow's default: d'Humieres's ghost rates held fixed moved this kappa by
+  // 1.5 % between tau = 0.8 and 1.5 and a jammed cluster's by 30 % from tau = 1 to 0.52.
   for (const char* style : {"trt", "mrt"}) {
-    const double spread = tau_spread(p, style, {0.8, 1.0, 1.5}, Driving::kPressure, 1e-7);
+    const double spread = tau_spread(p, style, {0.55, 0.8, 1.0, 1.5}, Driving::kBodyForce, 1e-9);
     INFO(style << " spread " << spread);
-    if (std::string(style) == "trt") CHECK(spread < 1e-3);
-    else CHECK(spread < 0.03);
+    CHECK(spread < 1e-4);
   }
+  const double held = tau_spread(p, "mrt-dh", {0.8, 1.0}, Driving::kPressure, 1e-9);
+  INFO("mrt-dh spread " << held);
+  CHECK(held > 1e-3);
 }
