@@ -3,6 +3,7 @@
 #include "lbm/flow_solver.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace cmp::lbm {
@@ -20,8 +21,19 @@ struct SteadyStateResult {
   std::vector<FlowObservables> history;  // one entry per check
 };
 
-// Steps until |kappa - kappa_prev| <= tol |kappa| and |tau_H - tau_H_prev| <= tol tau_H, where
-// _prev is the check `window` checks earlier, or until max_steps (converged = false). Starts
+// The steady-state test on the checks so far: for kappa and for tau_H, the change d1 over the
+// last `window` checks is at most tol (relative), and so is the estimated distance to the limit,
+// the rest of the geometric series when the change shrinks (d1 r / (1 - r), r = d1 / d0 with
+// d0 the change over the window before; a change that does not shrink is not steady unless both
+// are at round-off), and every change from one check to the next over the two windows is below
+// tol (an oscillation with the window's period looks still over a window). A flow that creeps slowly (r near 1) therefore runs on until the rest
+// of its creep is below tol, where the change over one window alone would stop it early.
+bool steady(const std::vector<FlowObservables>& history, const ConvergenceSettings& settings);
+// That estimated distance to the limit (relative, the larger of kappa's and tau_H's; infinite
+// when the change does not shrink), or nullopt before 2 windows of checks.
+std::optional<double> distance_to_steady(const std::vector<FlowObservables>& history, long window);
+
+// Steps until steady(), or until max_steps (converged = false). Starts
 // from the solver's current step count (a resumed run continues its count). on_check is
 // called after every check (progress bar, --history, checkpoint timer); may be empty. Throws
 // cmp::ComputationError if the flow blows up (a non-finite observable). `earlier`: the checks

@@ -260,3 +260,60 @@ TEST_CASE("solver: bad settings are refused with a usage error") {
   wrong.fluid.pop_back();
   CHECK_THROWS_AS(FlowSolver(wrong, pressure_settings()), cmp::UsageError);
 }
+
+namespace {
+
+// Checks of a flow that settles as kappa = 1 + a r^j, tau_H = 2 (check j).
+std::vector<FlowObservables> creeping(long checks, double a, double r) {
+  std::vector<FlowObservables> h;
+  for (long j = 0; j < checks; ++j) {
+    FlowObservables o;
+    o.steps = 100 * (j + 1);
+    o.kappa_lu = 1 + a * std::pow(r, static_cast<double>(j));
+    o.tortuosity = 2;
+    h.push_back(o);
+  }
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("steady state: a slow creep is not stopped early, a fast one stops at once") {
+  const ConvergenceSettings s{1e-6, 100, 10, 100000000};
+  // Decay time 10^5 checks: the change over one window is below tol long before the flow is
+  // within tol of its limit (the rule of a window's change alone stopped 100 times too early).
+  for (double r : {1 - 1e-5, 1 - 1e-3, 0.9}) {
+    long first = -1, window_only = -1;
+    std::vector<FlowObservables> h;
+    for (long j = 0; j < 5000000 && first < 0; ++j) {
+      FlowObservables o;
+      o.kappa_lu = 1 + 0.1 * std::pow(r, static_cast<double>(j));
+      o.tortuosity = 2;
+      h.push_back(o);
+      const long k = static_cast<long>(h.size());
+      if (window_only < 0 && k > 10 && std::abs(h[k - 1].kappa_lu - h[k - 11].kappa_lu) <= s.tol * h[k - 1].kappa_lu)
+        window_only = k;
+      if (steady(h, s)) first = k;
+    }
+    REQUIRE(first > 0);
+    const double left = 0.1 * std::pow(r, static_cast<double>(first - 1));
+    INFO("r " << r << ": steady at check " << first << " (window alone: " << window_only << "), " << left << " left");
+    CHECK(left <= 1e-6 * 1.05);  // (the tail estimated from two windows' changes)
+    if (r > 0.99) CHECK(window_only < first);
+  }
+  // A damped oscillation (sound waves) is steady only once its swings are below tol.
+  std::vector<FlowObservables> h;
+  for (long j = 0; j < 400; ++j) {
+    FlowObservables o;
+    o.kappa_lu = 1 + 1e-3 * std::pow(0.97, static_cast<double>(j)) * std::cos(0.7 * static_cast<double>(j));
+    o.tortuosity = 2;
+    h.push_back(o);
+    if (steady(h, s)) {
+      CHECK(1e-3 * std::pow(0.97, static_cast<double>(j)) < 2e-6);
+      break;
+    }
+  }
+  // Before two windows of checks nothing is steady; a flat history is.
+  CHECK_FALSE(steady(creeping(20, 0, 0.5), s));
+  CHECK(steady(creeping(21, 0, 0.5), s));
+}
