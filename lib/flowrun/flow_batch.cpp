@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <omp.h>
 #include <optional>
@@ -24,12 +25,16 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   const bool root = comm.root();
   // The decomposition, in the tables' provenance (the results do not depend on it, bit for bit).
   const std::string decomposition = fmt::format(" (ranks={} threads={} per rank)", comm.size(), omp_get_max_threads());
-  std::vector<FlowCase> cases;
+  const std::vector<int> refinements = o.refinements.empty() ? std::vector<int>{o.input.refine} : o.refinements;
+  std::vector<RefinementCases> inputs;
   comm.agree([&] {
     if (comm.size() > 1 && std::find(o.inputs.begin(), o.inputs.end(), "-") != o.inputs.end())
       throw UsageError("'-' (standard input) reaches only rank 0 under mpirun: give the input as a file");
-    for (const auto& path : o.inputs) cases.push_back(read_flow_case(path, o.input));
+    for (const auto& path : o.inputs) inputs.push_back(read_flow_cases(path, o.input, refinements));
   });
+  if (root)
+    for (const auto& in : inputs)
+      for (const auto& skip : in.skipped) std::cerr << "lbflow: " << skip << '\n';
   // The outputs' temporaries appear with their first row, not while the first flow runs.
   std::optional<io::AtomicOutput> csv_out, history_out;
   comm.agree([&] {  // (an output rank 0 cannot open stops every rank with its message)
@@ -41,13 +46,22 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
   std::vector<std::string> stalled;
   // A VTK field that cannot be written (a full disk) does not discard the table: said after it.
   std::optional<InputError> vtk_failure;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    auto& c = cases[i];
+  CoarseFlow coarse;  // the flow of the refinement before, as the start of the next
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  for (std::size_t k = 0; k < inputs[i].cases.size(); ++k) {
+    auto& c = inputs[i].cases[k];
+    const bool finest = k + 1 == inputs[i].cases.size();
     FlowOutcome out;
+    RunPlan plan = o.run;
+    if (std::isnan(plan.flow.collision_parameters.tau)) plan.flow.collision_parameters.tau = default_tau(c);
     {
-      FlowRun runner(c, o.run);
+      FlowRun runner(c, plan);
+      // With --prolong each refinement after the first starts from the flow of the one before.
+      if (o.prolong && k > 0 && o.run.resume.empty()) runner.start_from(prolonged_start(coarse, c.refine, plan.flow));
       out = runner.run();
-      if (!o.vtk_names[i].empty()) try {
+      if (o.prolong && !finest) coarse = runner.coarse_flow();
+      else coarse = {};
+      if (finest && !o.vtk_names[i].empty()) try {
           FlowField field = runner.field(out);  // collective: gathered on rank 0
           if (root)
             write_flow_vtk(o.vtk_names[i], field,
@@ -61,10 +75,10 @@ void run_flow_batch(const FlowBatch& o, const std::string& provenance) {
     if (!root) continue;
     if (!csv) {
       csv.emplace(csv_out->stream());
-      write_flow_meta(*csv, provenance + decomposition, o.run.flow, o.run.convergence);
+      write_flow_meta(*csv, provenance + decomposition, plan.flow, o.run.convergence);
       csv->header(flow_columns(o.timings));
     }
-    csv->row(flow_row(c, o.run.flow, out, o.timings));
+    csv->row(flow_row(c, plan.flow, out, o.timings));
     if (history_out) {
       if (!history) {
         history.emplace(history_out->stream());

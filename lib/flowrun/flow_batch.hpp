@@ -13,6 +13,8 @@ namespace cmp::flowrun {
 struct FlowBatch {
   std::vector<std::string> inputs;
   InputOptions input;
+  std::vector<int> refinements;        // --refine M1,M2,...: one run per M (empty: input.refine)
+  bool prolong = false;                // each M after the first started from the flow of the one before
   RunPlan run;
   std::vector<std::string> vtk_names;  // one per input; empty strings: no --vtk
   std::string csv = "-";               // the table ('-': stdout)

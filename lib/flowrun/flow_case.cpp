@@ -38,6 +38,8 @@ void check_lattice_size(const std::string& file, std::array<int, 3> voxels, int 
 
 }  // namespace
 
+double default_tau(const FlowCase& c) { return c.interpolated_walls ? 1.0 : 0.55; }
+
 const char* axis_name(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
 FlowCase image_case(const FlowImage& image, int M, int axis, bool periodic_axis) {
@@ -124,20 +126,44 @@ FlowCase sphere_case(const packing::Packing& p, double delta, int M, int axis, b
   return c;
 }
 
-FlowCase read_flow_case(const std::string& path, const InputOptions& o) {
-  if (!o.dims.empty()) return image_case(read_raw_image(path, parse_dims(o.dims)), o.refine, o.axis, o.periodic_axis);
+RefinementCases read_flow_cases(const std::string& path, const InputOptions& o, const std::vector<int>& refinements) {
+  RefinementCases r;
+  // One case per M from one reading; a coarse M at which nothing spans is skipped (said), the
+  // finest is the run's own and throws.
+  const auto each = [&](const auto& make) {
+    for (std::size_t k = 0; k < refinements.size(); ++k) try {
+        r.cases.push_back(make(refinements[k]));
+      } catch (const ComputationError& e) {
+        if (k + 1 == refinements.size()) throw;
+        r.skipped.push_back(fmt::format("M = {} skipped: {}", refinements[k], e.what()));
+      }
+  };
+  if (!o.dims.empty()) {
+    const FlowImage image = read_raw_image(path, parse_dims(o.dims));
+    each([&](int M) { return image_case(image, M, o.axis, o.periodic_axis); });
+    return r;
+  }
   // The format from the content, for a file and for standard input alike (docs/formats.md).
   io::Input input(path);
   const auto format = input.format();
-  if (format == io::InputFormat::vtk) return image_case(read_vtk_image(input), o.refine, o.axis, o.periodic_axis);
+  if (format == io::InputFormat::vtk) {
+    const FlowImage image = read_vtk_image(input);
+    each([&](int M) { return image_case(image, M, o.axis, o.periodic_axis); });
+    return r;
+  }
   if (format == io::InputFormat::xyz) {
     if (!(o.delta > 0))
       throw UsageError(path + ": a sphere packing needs --delta (the voxel side in D0; the node side is delta/M)");
     auto packings = packing::read_packings(input, {o.scale, o.d0});
     if (packings.size() != 1) throw InputError(path, 0, "holds several frames: give lbflow one packing per file");
-    return sphere_case(packings.front(), o.delta, o.refine, o.axis, o.periodic_axis);
+    each([&](int M) { return sphere_case(packings.front(), o.delta, M, o.axis, o.periodic_axis); });
+    return r;
   }
   input.fail_format("a VTK image (STRUCTURED_POINTS), a sphere packing (extended XYZ), or raw bytes with --dims");
+}
+
+FlowCase read_flow_case(const std::string& path, const InputOptions& o) {
+  return std::move(read_flow_cases(path, o, {o.refine}).cases.front());
 }
 
 }  // namespace cmp::flowrun

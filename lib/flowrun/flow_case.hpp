@@ -13,6 +13,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cmp::packing {
 struct Packing;
@@ -80,6 +81,25 @@ struct InputOptions {
 // VTK image or raw bytes from stdin. Throws cmp::InputError for anything else or a bad file,
 // cmp::UsageError for a packing without delta, and what image_case and sphere_case throw.
 FlowCase read_flow_case(const std::string& path, const InputOptions& options);
+
+// The cases of one input at several refinements M (ascending), read once: one case per M, but a
+// coarse M at which nothing spans the axis (a sphere packing whose throats close on the coarser
+// grid) is left out and said in `skipped` ("M = 1 skipped: FILE: no fluid cluster spans ...").
+// Throws as read_flow_case, and its ComputationError when nothing spans at the finest M.
+struct RefinementCases {
+  std::vector<FlowCase> cases;
+  std::vector<std::string> skipped;
+};
+RefinementCases read_flow_cases(const std::string& path, const InputOptions& options, const std::vector<int>& refinements);
+
+// lbflow's relaxation time when none is asked for. With half-way walls (images) the steady flow
+// of `mrt` and `trt` hardly depends on tau (kappa within 3e-5 from tau = 0.55 to 1 on a jammed
+// cluster at porosity 0.175, 1e-4 on Zick & Homsy's sphere array), while the slow settling of
+// the pressure along a barely connected cluster takes steps in proportion to the viscosity
+// (tau - 1/2)/3: 0.55 settles 5-7 times sooner than 1; below 0.55 kappa starts to move (2e-4 at
+// 0.52). Interpolated walls (sphere packings) move with tau (2.4 % from 1 to 0.55 on the sphere
+// array): they keep the thesis's tau = 1.
+double default_tau(const FlowCase& c);
 
 // "x", "y", "z".
 const char* axis_name(int axis);

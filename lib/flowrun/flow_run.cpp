@@ -65,6 +65,22 @@ FlowOutcome FlowRun::run() {
   return out;
 }
 
+void FlowRun::start_from(const lbm::StartState& state) {
+  solver_->start_from(state);
+  earlier_.clear();
+}
+
+CoarseFlow FlowRun::coarse_flow() const {
+  CoarseFlow c;
+  c.voxels = case_.voxels;
+  c.refine = case_.refine;
+  c.settings = plan_.flow;
+  // Gathered on rank 0, then shared (the other ranks add nothing to the concatenation).
+  c.density = plan_.comm.all_gather(solver_->density_field());
+  c.velocity = plan_.comm.all_gather(solver_->velocity_field());
+  return c;
+}
+
 FlowField FlowRun::field(const FlowOutcome& outcome) const {
   FlowField f;
   f.dims = {case_.lattice.nx, case_.lattice.ny, case_.lattice.nz};

@@ -4,6 +4,7 @@
 #include "flowrun/flow_case.hpp"
 #include "flowrun/flow_table.hpp"
 #include "flowrun/flow_vtk.hpp"
+#include "flowrun/prolong.hpp"
 #include "lbm/flow_solver.hpp"
 #include "lbm/steady_state.hpp"
 
@@ -35,6 +36,10 @@ class FlowRun {
   // Steps to steady state or the step cap; a progress bar (steps, kappa, its change) on a
   // terminal; the checkpoint every plan.checkpoint_every seconds and once at the end.
   FlowOutcome run();
+  // Starts from a guess of the steady flow instead of rest (before run(); not with a resume).
+  void start_from(const lbm::StartState& state);
+  // The flow reached, on every rank, as the start of a finer lattice (prolonged_start). Collective.
+  CoarseFlow coarse_flow() const;
   // Velocity and density on every node, in the input's geometry, for write_flow_vtk; field
   // data delta, d0, scale (when known), refine, permeability_lu, tortuosity.
   FlowField field(const FlowOutcome& outcome) const;

@@ -43,33 +43,53 @@ FlowSolver::FlowSolver(const PoreLattice& lattice, const FlowSettings& settings,
   comm.agree([&] {
     const std::vector<WallFraction> fractions = m.build_link_table(lattice);
     m.build_walls(fractions);
-    // Start: rest, linear density between the pressure planes (ghost nodes too, for tidiness:
-    // the halo overwrites the slots that matter).
-    const long N = m.ghost_end;
-    const double rho_in = 1 + 0.5 * settings.density_drop;
-    auto init = [&](auto& F) {
-      F.assign(static_cast<std::size_t>(kQ * N), 0);
-      for (long i = 0; i < N; ++i) {
-        double rho = 1;
-        const long ghost = i - m.stride;
-        const long g = i < m.fluid ? m.site[static_cast<std::size_t>(i)]
-                       : ghost >= 0 && ghost < static_cast<long>(m.ghost_site.size()) ? m.ghost_site[static_cast<std::size_t>(ghost)]
-                                                                                        : -1;
-        if (pressure && g >= 0) {
-          const int xyz[3] = {static_cast<int>(g % m.n[0]), static_cast<int>(g / m.n[0] % m.n[1]),
-                              static_cast<int>(g / m.n[0] / m.n[1])};
-          rho = rho_in - settings.density_drop * xyz[a] / (m.n[a] - 1);
-        }
-        for (int q = 0; q < kQ; ++q) store_population(F.data(), pop_slot(q, i), weight(q) * rho);
-      }
-    };
-    if (settings.precision == Precision::kFloat) init(m.ff);
-    else init(m.fd);
+    // Start: rest, linear density between the pressure planes.
+    m.fill_equilibrium([&](long g, double& rho, double u[3]) {
+      u[0] = u[1] = u[2] = 0;
+      rho = m.rest_density(g);
+    });
   });
   m.halo.build(m.comm, std::move(m.pending_ghosts), m.own_slot);  // m.comm: comm may be a temporary
   m.pending_ghosts = {};
   m.own_slot = nullptr;
   m.fp = m.fingerprint_of(lattice);
+}
+
+double FlowSolver::Impl::rest_density(long g) const {
+  if (settings.driving != Driving::kPressure) return 1;
+  const int a = settings.axis;
+  const long xyz[3] = {g % n[0], g / n[0] % n[1], g / n[0] / n[1]};
+  return 1 + 0.5 * settings.density_drop - settings.density_drop * static_cast<double>(xyz[a]) / (n[a] - 1);
+}
+
+// Every slot of this rank, ghost nodes too (for tidiness: the halo overwrites the slots that
+// matter), set to the incompressible equilibrium of the state at its node's grid index.
+void FlowSolver::Impl::fill_equilibrium(const StartState& state) {
+  const long N = ghost_end;
+  auto init = [&](auto& F) {
+    F.assign(static_cast<std::size_t>(kQ * N), 0);
+    for (long i = 0; i < N; ++i) {
+      const long ghost = i - stride;
+      const long g = i < fluid ? site[static_cast<std::size_t>(i)]
+                     : ghost >= 0 && ghost < static_cast<long>(ghost_site.size()) ? ghost_site[static_cast<std::size_t>(ghost)]
+                                                                                      : -1;
+      double rho = 1, u[3] = {0, 0, 0};
+      if (g >= 0) state(g, rho, u);
+      const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+      for (int q = 0; q < kQ; ++q) {
+        const double cu = kCx[q] * u[0] + kCy[q] * u[1] + kCz[q] * u[2];
+        store_population(F.data(), pop_slot(q, i), weight(q) * (rho + 3 * cu + 4.5 * cu * cu - 1.5 * uu));
+      }
+    }
+  };
+  if (settings.precision == Precision::kFloat) init(ff);
+  else init(fd);
+}
+
+void FlowSolver::start_from(const StartState& state) {
+  Impl& m = *impl_;
+  m.fill_equilibrium(state);
+  m.steps = 0;
 }
 
 FlowSolver::~FlowSolver() = default;

@@ -45,8 +45,8 @@
 //  - kBodyForce: fully periodic box, a uniform force density g along the axis on the fluid
 //    (Guo forcing), |grad p| := g (a body force is equivalent to that pressure gradient).
 //
-// Steady flow (a few thousand steps on test lattices) needs no special start: the solver
-// starts at rest on the linear density ramp of the pressure drop.
+// Start: at rest on the linear density ramp of the pressure drop, or from a guess of the steady
+// flow (start_from: the flow of a coarser lattice prolonged, flowrun/prolong.hpp).
 //
 // Observables (observe()): kappa_lu = nu <u_axis> / |grad p|, <u_axis> the superficial mean
 // over the WHOLE box (solid nodes count as zero velocity), nu = (tau - 1/2)/3, rho_0 = 1.
@@ -55,6 +55,7 @@
 #include "lbm/pore_lattice.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -94,6 +95,10 @@ struct FlowObservables {           // every field in lattice units
 // the 18 four-byte links, read on odd steps only. Double: 2 x 19 x 8 + 18 x 4 / 2 = 340.
 double update_bytes(Precision precision);
 
+// The macroscopic state a run starts from at one node (its grid index, x fastest): density
+// and velocity in lattice units.
+using StartState = std::function<void(long grid_index, double& rho, double u[3])>;
+
 class FlowSolver {
  public:
   // Builds the link table and starts from rest at the linear density profile of the
@@ -110,6 +115,10 @@ class FlowSolver {
   FlowSolver(FlowSolver&&) noexcept;
   FlowSolver& operator=(FlowSolver&&) noexcept;
 
+  // Replaces the state by the equilibrium of `state` at every node (each rank asks for its own
+  // nodes only), step count 0: a run started from a guess of the steady flow (the flow of a
+  // coarser lattice, flowrun/prolong.hpp) instead of rest. Collective.
+  void start_from(const StartState& state);
   // n fused stream+collide steps on all OpenMP threads, same bits for any thread count.
   void step(long n);
   // Macroscopic observables of the current state (ordered reductions: thread-independent).

@@ -112,6 +112,10 @@ struct FlowSolver::Impl {
   void apply_pressure_planes(Real* F, bool after_odd) const;
   template <int A, class Real>
   void pressure_nodes(Real* F, long begin, long end, bool after_odd) const;
+  // flow_solver.cpp: the density of the start at rest (the linear ramp of the pressure drop);
+  // every slot at the equilibrium of a state
+  double rest_density(long grid_index) const;
+  void fill_equilibrium(const StartState& state);
   // flow_step.cpp
   template <class Real>
   void step_once();

@@ -9,6 +9,7 @@
 //   mpirun -np 4 lbflow cluster.vtk --refine 3 > flow.csv                one flow on 4 MPI ranks, same bits
 #include "cli/checkpoint_args.hpp"
 #include "cli/seed_range.hpp"
+#include "cli/value_list.hpp"
 #include "cli/tool.hpp"
 #include "core/errors.hpp"
 #include "core/registry.hpp"
@@ -27,6 +28,7 @@
 #include <csignal>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -40,12 +42,12 @@ struct Options {
   std::vector<std::string> inputs;
   std::string dims, collision = "mrt", axis = "x", drive = "pressure", precision = "double";
   std::string csv = "-", vtk, history, checkpoint, resume;
-  int refine = 3;
-  double tau = 1.0, magic = 3.0 / 16.0, density_drop = 1e-3, body_force = 1e-6;
+  std::string refine = "3";
+  double tau = std::numeric_limits<double>::quiet_NaN(), magic = 3.0 / 16.0, density_drop = 1e-3, body_force = 1e-6;
   double delta = 0, scale = 1, d0 = 0, checkpoint_every = 300;
   double tol = 1e-6;
   long max_steps = 200000, check_every = 100, window = 10;
-  bool list = false, timings = false;
+  bool list = false, timings = false, prolong = false;
 };
 
 // The options that only steer this process (not the run): left out of a checkpoint's arguments.
@@ -64,8 +66,9 @@ void declare(cli::Tool& tool, Options& o) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   tool.declare_inputs(app, o.inputs);
   app.add_option("--dims", o.dims, "the inputs are raw bytes (x fastest, non-zero = fluid) of NXxNYxNZ voxels");
-  tool.add_int(app, "-M,--refine", o.refine, "lattice refinement M: each voxel becomes M^3 nodes (thesis: 3)",
-               cli::at_least(1));
+  app.add_option("-M,--refine", o.refine, "lattice refinement M: each voxel becomes M^3 nodes (thesis: 3); a list "
+                                        "(1,2,3) solves each M in turn, one row per M")
+      ->capture_default_str();
   tool.add_double(app, "--delta", o.delta, "sphere packings: voxel side [D0] (the node side is delta/M)",
                   cli::positive());
   tool.add_double(app, "--scale", o.scale, "sphere packings: multiply every radius by this factor (inflation)",
@@ -74,7 +77,11 @@ void declare(cli::Tool& tool, Options& o) {
                                      "mean diameter (as percolate)", cli::non_negative());
   app.add_option("--collision", o.collision, "collision model (--list-models)")->capture_default_str();
   app.add_flag("--list-models", o.list, "print the collision models and exit");
-  tool.add_double(app, "--tau", o.tau, "relaxation time of the shear moments; viscosity (tau - 1/2)/3 [lattice units]",
+  app.add_flag("--prolong", o.prolong, "with a --refine list: start each M from the flow of the one before, prolonged "
+                                       "(not faster on the clusters measured so far: docs/lbflow.md)");
+  tool.add_double(app, "--tau", o.tau, "relaxation time of the shear moments; viscosity (tau - 1/2)/3 [lattice units]; "
+                                     "default 0.55 on images (half-way walls: the same kappa as the thesis's 1, settled "
+                                     "5-7 times sooner), 1 on sphere packings (interpolated walls move with tau)",
                   {0.5, std::numeric_limits<double>::infinity(), true, false});
   tool.add_double(app, "--magic", o.magic, "TRT/MRT magic parameter Lambda (3/16: walls half-way for every tau)",
                   cli::positive());
@@ -116,7 +123,23 @@ void print_models() {
 struct Plan {
   flowrun::RunPlan run;
   std::vector<std::string> vtk_names;
+  std::vector<int> refinements;
 };
+
+// --refine: whole numbers from 1, ascending, no repeats.
+std::vector<int> parse_refinements(const std::string& text) {
+  std::vector<int> r;
+  for (double v : cli::parse_value_list(text)) {
+    if (!(v >= 1 && v <= 64 && v == std::floor(v)))
+      throw UsageError("must be whole numbers from 1 to 64, got " + io::format_number(v));
+    if (!r.empty() && static_cast<int>(v) <= r.back())
+      throw UsageError(fmt::format("must ascend without repeats (each M starts from the one before), got {} after {}",
+                                   static_cast<int>(v), r.back()));
+    r.push_back(static_cast<int>(v));
+  }
+  if (r.empty()) throw UsageError("needs at least one M");
+  return r;
+}
 
 Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& args) {
   Plan p;
@@ -124,6 +147,9 @@ Plan check(cli::Tool& tool, const Options& o, const std::vector<std::string>& ar
   tool.check(!o.inputs.empty(), "", "no input given (a VTK image, raw bytes with --dims, a sphere packing XYZ, or --resume)");
   tool.check(std::count(o.inputs.begin(), o.inputs.end(), std::string("-")) <= 1, "",
              "'-' (standard input) given more than once: it can be read only once");
+  tool.collect("--refine", [&] { p.refinements = parse_refinements(o.refine); });
+  tool.check((o.checkpoint.empty() && o.resume.empty()) || p.refinements.size() <= 1, "--refine",
+             "a checkpoint holds the run of one M: give one M with --checkpoint or --resume");
   tool.collect("--collision", [&] { lbm::collision_style(o.collision); });
   f.collision = o.collision;
   f.collision_parameters = {o.tau, o.magic};
@@ -201,9 +227,9 @@ int main(int argc, char** argv) {
     tool->finish_checks();
     cli::apply_threads(o.common);
     flowrun::FlowBatch batch{o.inputs,
-                             {o.dims, o.refine, o.delta, o.scale, o.d0, plan.run.flow.axis,
+                             {o.dims, plan.refinements.empty() ? 3 : plan.refinements.back(), o.delta, o.scale, o.d0, plan.run.flow.axis,
                               plan.run.flow.driving == lbm::Driving::kBodyForce},
-                             plan.run, plan.vtk_names, o.csv, o.history, o.timings, o.common.quiet,
+                             plan.refinements, o.prolong, plan.run, plan.vtk_names, o.csv, o.history, o.timings, o.common.quiet,
                              o.drive == "force" ? "body-force" : "density-drop",
                              o.checkpoint.empty() ? "" : "; continue with lbflow --resume " + o.checkpoint + " --max-steps N"};
     batch.run.comm = comm;
