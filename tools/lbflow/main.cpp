@@ -130,8 +130,8 @@ struct Plan {
 std::vector<int> parse_refinements(const std::string& text) {
   std::vector<int> r;
   for (double v : cli::parse_value_list(text)) {
-    if (!(v >= 1 && v <= 64 && v == std::floor(v)))
-      throw UsageError("must be whole numbers from 1 to 64, got " + io::format_number(v));
+    if (!(v >= 1 && v <= 1e6 && v == std::floor(v)))  // (the lattice size is checked with the image)
+      throw UsageError("must be whole numbers from 1, got " + io::format_number(v));
     if (!r.empty() && static_cast<int>(v) <= r.back())
       throw UsageError(fmt::format("must ascend without repeats (each M starts from the one before), got {} after {}",
                                    static_cast<int>(v), r.back()));
